@@ -1,0 +1,132 @@
+// Energy + gradient throughput of the per-cell kernel, per measure, 2D and 3D, one thread:
+// for every cell, J = Ds Dm^-1, D(J), dD/dJ and the n+1 vertex gradients accumulated into a
+// per-vertex array (what one solver pass over the mesh costs). Also the 3x3 SVD variants.
+//
+//   build/benchmark/Distortion_optimization/bench_kernel
+
+#include <CGAL/Distortion_optimization/internal/cell_distortion.h>
+#include <CGAL/Distortion_optimization/measures.h>
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+namespace DO = CGAL::Distortion_optimization;
+namespace DI = CGAL::Distortion_optimization::internal;
+
+namespace {
+
+// A k^n grid of unit cells split into simplices (2 triangles or 6 Kuhn tetrahedra each), mapped
+// by the identity plus a small random displacement that keeps every cell positive.
+template <int n>
+DI::Simplicial_map<n> noisy_grid(int k)
+{
+  DI::Simplicial_map<n> map;
+  const int m = k + 1;
+  auto id = [&](int i, int j, int l) { return static_cast<std::uint32_t>((l * m + j) * m + i); };
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> noise(-0.1, 0.1);
+  const int layers = n == 3 ? m : 1;
+  for(int l = 0; l < layers; ++l)
+    for(int j = 0; j < m; ++j)
+      for(int i = 0; i < m; ++i) {
+        DI::Vector<n> x;
+        x[0] = i + noise(rng);
+        x[1] = j + noise(rng);
+        if constexpr(n == 3) x[2] = l + noise(rng);
+        map.target.push_back(x);
+      }
+  auto rest = [](const DI::Vector<n>& x) { return x; };
+  auto add = [&](const std::array<std::uint32_t, n + 1>& cell, const std::array<DI::Vector<n>, n + 1>& p) {
+    DI::Matrix<n> Dm;
+    for(int c = 0; c < n; ++c) Dm.col(c) = rest(p[c + 1]) - rest(p[0]);
+    map.add_cell(cell, Dm);
+  };
+  for(int l = 0; l < (n == 3 ? k : 1); ++l)
+    for(int j = 0; j < k; ++j)
+      for(int i = 0; i < k; ++i) {
+        if constexpr(n == 2) {
+          auto P = [&](int a, int b) { return DI::Vector<2>(i + a, j + b); };
+          add({id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0)}, {P(0, 0), P(1, 0), P(1, 1)});
+          add({id(i, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0)}, {P(0, 0), P(1, 1), P(0, 1)});
+        } else {
+          // Kuhn subdivision: one tet per permutation of the axes, all positively oriented.
+          const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+          for(const auto& p : perms) {
+            std::array<int, 3> c = {0, 0, 0};
+            std::array<std::uint32_t, 4> cell;
+            std::array<DI::Vector<3>, 4> pts;
+            for(int s = 0; s <= 3; ++s) {
+              if(s > 0) c[p[s - 1]] = 1;
+              cell[s] = id(i + c[0], j + c[1], l + c[2]);
+              pts[s] = DI::Vector<3>(i + c[0], j + c[1], l + c[2]);
+            }
+            if((DI::Matrix<3>() << pts[1] - pts[0], pts[2] - pts[0], pts[3] - pts[0]).finished().determinant() < 0) {
+              std::swap(cell[2], cell[3]);
+              std::swap(pts[2], pts[3]);
+            }
+            add(cell, pts);
+          }
+        }
+      }
+  return map;
+}
+
+template <int n, class Measure>
+void energy_and_gradient(benchmark::State& state)
+{
+  const DI::Simplicial_map<n> map = noisy_grid<n>(n == 2 ? 300 : 40);
+  std::vector<DI::Vector<n>> gradient(map.number_of_vertices());
+  std::array<DI::Vector<n>, n + 1> g;
+  const Measure measure{};
+  for(auto _ : state) {
+    double energy = 0;
+    for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
+      energy += map.rest_volume[c] * DI::cell_distortion<n>(measure, map, c, g);
+      for(int i = 0; i <= n; ++i) gradient[map.cells[c][i]] += map.rest_volume[c] * g[i];
+    }
+    benchmark::DoNotOptimize(energy);
+    benchmark::DoNotOptimize(gradient.data());
+  }
+  state.SetItemsProcessed(state.iterations() * map.number_of_cells());
+  state.SetLabel(n == 2 ? "triangles" : "tets");
+}
+
+template <int n, bool closed_form>
+void svd(benchmark::State& state)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<DI::Matrix<n>> Js(4096);
+  for(auto& J : Js) J = DI::Matrix<n>::Identity() + 0.3 * DI::Matrix<n>::NullaryExpr([&] { return u(rng); });
+  DI::Signed_svd<n> out;
+  for(auto _ : state)
+    for(const auto& J : Js) {
+      if constexpr(closed_form) DI::signed_svd(J, out);
+      else DI::signed_svd_jacobi(J, out);
+      benchmark::DoNotOptimize(out.sigma.data());
+    }
+  state.SetItemsProcessed(state.iterations() * Js.size());
+}
+
+} // namespace
+
+#define DISTORTION_BENCH(MEASURE)                                                         \
+  BENCHMARK_TEMPLATE(energy_and_gradient, 2, DO::MEASURE)->Unit(benchmark::kMillisecond); \
+  BENCHMARK_TEMPLATE(energy_and_gradient, 3, DO::MEASURE)->Unit(benchmark::kMillisecond);
+
+DISTORTION_BENCH(Symmetric_dirichlet)
+DISTORTION_BENCH(MIPS)
+DISTORTION_BENCH(Dirichlet)
+DISTORTION_BENCH(Volume_distortion)
+DISTORTION_BENCH(Conformal_dilatation)
+DISTORTION_BENCH(Condition_number)
+DISTORTION_BENCH(Isometric_dilatation)
+DISTORTION_BENCH(ARAP)
+
+BENCHMARK_TEMPLATE(svd, 2, true);
+BENCHMARK_TEMPLATE(svd, 2, false);
+BENCHMARK_TEMPLATE(svd, 3, true);
+BENCHMARK_TEMPLATE(svd, 3, false);
+
+BENCHMARK_MAIN();

@@ -1,0 +1,65 @@
+# Helpers for the test, example and benchmark subdirectories of Distortion_optimization.
+#
+#   distortion_add_test(NAME src... [LIBRARIES lib...])
+#   distortion_add_example(NAME src... [LIBRARIES lib...])
+#   distortion_add_benchmark(NAME src... [LIBRARIES lib...])
+#
+# Each creates the executable target NAME linking CGAL::Distortion_optimization (plus
+# CGAL::TBB_support and the define DISTORTION_OPTIMIZATION_HAS_TBB when TBB was found), with
+# -Wall -Wextra -Wno-maybe-uninitialized and DISTORTION_OPTIMIZATION_DATA_DIR="<build>/data". Optional LIBRARIES are linked
+# PRIVATE (e.g. Distortion_optimization::TetGen, guarded by if(TARGET ...)).
+# Binaries land at fixed paths, whatever the generator or the calling directory:
+#   tests       <build>/test/Distortion_optimization/NAME
+#   examples    <build>/examples/Distortion_optimization/NAME
+#   benchmarks  <build>/benchmark/Distortion_optimization/NAME
+
+include_guard(GLOBAL)
+
+function(_distortion_setup_target name output_subdir)
+  target_link_libraries(${name} PRIVATE CGAL::Distortion_optimization)
+  if(TARGET CGAL::TBB_support)
+    target_link_libraries(${name} PRIVATE CGAL::TBB_support)
+    target_compile_definitions(${name} PRIVATE DISTORTION_OPTIMIZATION_HAS_TBB)
+  endif()
+  target_compile_definitions(${name} PRIVATE
+    "DISTORTION_OPTIMIZATION_DATA_DIR=\"${DISTORTION_OPTIMIZATION_DATA_DIR}\"")
+  target_compile_options(${name} PRIVATE
+    "$<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall;-Wextra;-Wno-maybe-uninitialized>")
+  # The "$<0:>" generator expression stops multi-config generators from appending a
+  # per-configuration subdirectory, so the binary path is the same everywhere.
+  set_target_properties(${name} PROPERTIES
+    RUNTIME_OUTPUT_DIRECTORY "${PROJECT_BINARY_DIR}/${output_subdir}$<0:>")
+endfunction()
+
+function(distortion_add_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "LIBRARIES")
+  if(NOT ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "distortion_add_test(${name}): no source files")
+  endif()
+  add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
+  _distortion_setup_target(${name} test/Distortion_optimization)
+  target_link_libraries(${name} PRIVATE GTest::gtest_main ${ARG_LIBRARIES})
+  gtest_discover_tests(${name}
+    WORKING_DIRECTORY "${PROJECT_BINARY_DIR}/test/Distortion_optimization"
+    DISCOVERY_TIMEOUT 60)
+endfunction()
+
+function(distortion_add_example name)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "LIBRARIES")
+  if(NOT ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "distortion_add_example(${name}): no source files")
+  endif()
+  add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
+  _distortion_setup_target(${name} examples/Distortion_optimization)
+  target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES})
+endfunction()
+
+function(distortion_add_benchmark name)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "LIBRARIES")
+  if(NOT ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "distortion_add_benchmark(${name}): no source files")
+  endif()
+  add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
+  _distortion_setup_target(${name} benchmark/Distortion_optimization)
+  target_link_libraries(${name} PRIVATE benchmark::benchmark ${ARG_LIBRARIES})
+endfunction()

@@ -1,0 +1,27 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_ERRORS_H
+#define CGAL_DISTORTION_OPTIMIZATION_ERRORS_H
+
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationRef
+/// Thrown by every function of the package for input it cannot accept: empty or non-triangular
+/// meshes, sizes that differ, non-finite coordinates, degenerate source cells, inverted cells in a
+/// start map under a normalized measure, unreadable files, ... The message names the offending
+/// element (vertex or cell index, file and line). Inputs are left unmodified when it is thrown.
+class Invalid_input : public std::invalid_argument
+{
+public:
+  explicit Invalid_input(const std::string& what) : std::invalid_argument(what) {}
+};
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_ERRORS_H

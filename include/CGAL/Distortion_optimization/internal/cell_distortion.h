@@ -1,0 +1,87 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The per-cell kernel: D(J) and its exact derivative dD/dJ = U diag(dD/dsigma) V^T.
+// Measures that can be written with invariants of J (norm, determinant, inverse) skip the SVD.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
+
+#include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/internal/simplicial_map.h>
+#include <CGAL/Distortion_optimization/internal/svd.h>
+
+#include <array>
+
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+template <class Measure, int n, class = void>
+struct Has_value_without_svd : std::false_type {};
+
+template <class Measure, int n>
+struct Has_value_without_svd<Measure, n,
+  std::void_t<decltype(std::declval<const Measure&>().template value_without_svd<n>(
+    std::declval<const Matrix<n>&>(), static_cast<Matrix<n>*>(nullptr)))>> : std::true_type {};
+
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+
+/// D(J). NaN when J has a non-finite entry, so that callers can report it (never silently +inf).
+template <int n, class Measure>
+double cell_distortion(const Measure& measure, const Matrix<n>& J)
+{
+  if(!J.allFinite())
+    return not_a_number;
+  if constexpr(Has_value_without_svd<Measure, n>::value)
+    return measure.template value_without_svd<n>(J, nullptr);
+  else
+    return measure.template value<n>(signed_singular_values(J));
+}
+
+/// D(J) and dD/dJ. Where D is +inf (an inverted cell under a normalized measure) or J is not
+/// finite, dJ is NaN.
+template <int n, class Measure>
+double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ)
+{
+  double value = not_a_number;
+  if(J.allFinite()) {
+    if constexpr(Has_value_without_svd<Measure, n>::value) {
+      value = measure.template value_without_svd<n>(J, &dJ);
+    } else {
+      Signed_svd<n> svd;
+      signed_svd(J, svd);
+      value = measure.template value<n>(svd.sigma);
+      if(value < std::numeric_limits<double>::infinity())
+        dJ.noalias() = svd.U * measure.template gradient<n>(svd.sigma).asDiagonal() * svd.V.transpose();
+    }
+  }
+  if(!(value < std::numeric_limits<double>::infinity()))
+    dJ.setConstant(not_a_number);
+  return value;
+}
+
+/// D(J_c) of cell c of a map and its derivative in the cell's n+1 target positions:
+/// with G = dD/dJ Dm^-T, dD/dx_i is column i-1 of G and dD/dx_0 = -(sum of the columns).
+template <int n, class Measure>
+double cell_distortion(const Measure& measure, const Simplicial_map<n>& map, std::size_t c,
+                       std::array<Vector<n>, n + 1>& vertex_gradients)
+{
+  Matrix<n> dJ;
+  const double value = cell_distortion<n>(measure, map.jacobian(c), dJ);
+  const Matrix<n> G = dJ * map.inverse_rest[c].transpose();
+  vertex_gradients[0] = -G.rowwise().sum();
+  for(int i = 0; i < n; ++i)
+    vertex_gradients[i + 1] = G.col(i);
+  return value;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H

@@ -1,0 +1,427 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Distortion measures of "Geometry-based distortion measures for space deformation"
+// (Naitsat, Saucan, Zeevi), section 2.1: each is a function D(sigma_1, ..., sigma_n) of the
+// singular values of the Jacobian of a simplicial map, together with its exact derivative dD/dsigma.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
+#define CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Singular values sigma_1 >= ... >= sigma_{n-1} >= |sigma_n| of a Jacobian; sigma_n carries the
+/// sign of det J, so sigma_n <= 0 means a degenerate or inverted cell.
+template <int n> using Singular_values = Eigen::Matrix<double, n, 1>;
+
+/// The n x n Jacobian of a simplicial map on one cell.
+template <int n> using Jacobian = Eigen::Matrix<double, n, n>;
+
+/*!
+\ingroup PkgDistortionOptimizationMeasures
+\page MeasureConcept The `DistortionMeasure` concept
+
+A model provides, for n = 2 and n = 3:
+- `template <int n> double value(const Singular_values<n>& s) const`: D(s); `+infinity` where the
+  measure is normalized and `s[n-1] <= 0` (degenerate or inverted cell);
+- `template <int n> Singular_values<n> gradient(const Singular_values<n>& s) const`: dD/dsigma_i
+  (NaN where the value is infinite);
+- `bool is_normalized() const`: D >= D(1,...,1) and D -> infinity as sigma_n -> 0 (Appendix C.1);
+  the optimizer refuses inverted starts for such measures;
+- `template <int n> bool is_symmetric() const`: D(s) = D(1/s_n, ..., 1/s_1) (C.6);
+- `std::string name() const`.
+A measure is *regular* (RDM) when it is normalized and symmetric (and smooth almost everywhere,
+which holds for all the measures here).
+
+Optionally, a model may add `template <int n> double value_without_svd(const Jacobian<n>& J,
+Jacobian<n>* dJ) const` that returns D and, if `dJ` is not null, dD/dJ computed from
+invariants of J (norm, determinant, inverse) instead of an SVD; the package then uses it.
+*/
+
+namespace measures_internal {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+template <int n>
+Singular_values<n> nan_gradient()
+{
+  return Singular_values<n>::Constant(std::numeric_limits<double>::quiet_NaN());
+}
+
+template <int n>
+Singular_values<n> unit(int i)
+{
+  return Singular_values<n>::Unit(i);
+}
+
+// Shared by the measures that need no SVD: the squared Frobenius norm of J, of J^-1, and det J.
+template <int n>
+struct Invariants
+{
+  double det, norm2;
+  Jacobian<n> inverse;
+  explicit Invariants(const Jacobian<n>& J) : det(J.determinant()), norm2(J.squaredNorm())
+  {
+    if(det > 0)
+      inverse = J.inverse();
+  }
+};
+
+} // namespace measures_internal
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Quasi-conformal dilatation K = max(K_I, K_O) (eq. 8): K_I = s_1...s_{n-1} / s_n^{n-1},
+/// K_O = s_1^{n-1} / (s_2...s_n). Equals the condition number in 2D. Regular, minimum 1.
+struct Conformal_dilatation
+{
+  std::string name() const { return "conformal"; }
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return true; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::infinity;
+    const double p = s.prod();
+    return std::max(p / std::pow(s[n - 1], n), std::pow(s[0], n) / p);
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
+    const double p = s.prod();
+    const double inner = p / std::pow(s[n - 1], n), outer = std::pow(s[0], n) / p;
+    Singular_values<n> g;
+    if(inner >= outer) {   // d(prod/s_n^n)/ds_i = K_I/s_i, and (1-n) K_I/s_n for i = n
+      g = inner * s.cwiseInverse();
+      g[n - 1] = (1 - n) * inner / s[n - 1];
+    } else {               // d(s_1^n/prod)/ds_i = -K_O/s_i, and (n-1) K_O/s_1 for i = 1
+      g = -outer * s.cwiseInverse();
+      g[0] = (n - 1) * outer / s[0];
+    }
+    return g;
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Condition number (linear dilatation) s_1 / s_n (eq. 9). Regular, minimum 1.
+struct Condition_number
+{
+  std::string name() const { return "condition"; }
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return true; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return s[n - 1] > 0 ? s[0] / s[n - 1] : measures_internal::infinity;
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
+    Singular_values<n> g = Singular_values<n>::Zero();
+    g[0] += 1. / s[n - 1];
+    g[n - 1] += -s[0] / (s[n - 1] * s[n - 1]);
+    return g;
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// MIPS energy (s_1^2 + ... + s_n^2) / (s_1...s_n)^{2/n} = trace(J^T J) / det(J)^{2/n} (eq. 11).
+/// In 2D this is exactly eq. 10, s_1/s_2 + s_2/s_1, so one measure serves both equations.
+/// Normalized (minimum n); symmetric only in 2D.
+struct MIPS
+{
+  std::string name() const { return "mips"; }
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return n == 2; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::infinity;
+    return s.squaredNorm() / std::pow(s.prod(), 2. / n);
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
+    const double scale = std::pow(s.prod(), 2. / n), v = s.squaredNorm() / scale;
+    return (2. / scale) * s - (2. / n) * v * s.cwiseInverse();
+  }
+  template <int n>
+  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  {
+    measures_internal::Invariants<n> I(J);
+    if(!(I.det > 0)) return measures_internal::infinity;
+    const double scale = std::pow(I.det, 2. / n), v = I.norm2 / scale;
+    if(dJ) *dJ = (2. / scale) * J - (2. / n) * v * I.inverse.transpose();
+    return v;
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Quasi-isometric dilatation C = max(s_1, 1/s_n) (eq. 12). Regular, minimum 1.
+struct Isometric_dilatation
+{
+  std::string name() const { return "isometric"; }
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return true; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return s[n - 1] > 0 ? std::max(s[0], 1. / s[n - 1]) : measures_internal::infinity;
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
+    if(s[0] >= 1. / s[n - 1]) return measures_internal::unit<n>(0);
+    return (-1. / (s[n - 1] * s[n - 1])) * measures_internal::unit<n>(n - 1);
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// As-rigid-as-possible energy sum (s_i - 1)^2 (eq. 13), with the signed s_n, so that the
+/// nearest rotation (never a reflection) is the reference. Not normalized (finite on inverted
+/// cells), not symmetric; minimum 0.
+struct ARAP
+{
+  std::string name() const { return "arap"; }
+  bool is_normalized() const { return false; }
+  template <int n> bool is_symmetric() const { return false; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return (s.array() - 1.).square().sum();
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    return 2. * (s.array() - 1.).matrix();
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Symmetric Dirichlet energy (1/2n) sum (s_i^2 + s_i^-2) (eq. 14). Regular, minimum 1.
+struct Symmetric_dirichlet
+{
+  std::string name() const { return "symmetric_dirichlet"; }
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return true; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::infinity;
+    return (s.squaredNorm() + s.cwiseInverse().squaredNorm()) / (2 * n);
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
+    return (s.array() - s.array().cube().inverse()).matrix() / n;
+  }
+  // |J|^2 + |J^-1|^2, derivative 2J - 2 J^-T J^-1 J^-T.
+  template <int n>
+  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  {
+    measures_internal::Invariants<n> I(J);
+    if(!(I.det > 0)) return measures_internal::infinity;
+    if(dJ) {
+      const Jacobian<n> inverse_t = I.inverse.transpose();
+      *dJ = (J - inverse_t * I.inverse * inverse_t) / n;
+    }
+    return (I.norm2 + I.inverse.squaredNorm()) / (2 * n);
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Volume (area in 2D) distortion V = max(det J, 1/det J) (eq. 15). Regular, minimum 1.
+struct Volume_distortion
+{
+  std::string name() const { return "volume"; }
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return true; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    const double d = s.prod();
+    return d > 0 ? std::max(d, 1. / d) : measures_internal::infinity;
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    const double d = s.prod();
+    if(!(d > 0)) return measures_internal::nan_gradient<n>();
+    return (d >= 1 ? d : -1. / d) * s.cwiseInverse();
+  }
+  // d(det)/dJ = det J^-T.
+  template <int n>
+  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  {
+    measures_internal::Invariants<n> I(J);
+    if(!(I.det > 0)) return measures_internal::infinity;
+    if(dJ) *dJ = (I.det >= 1 ? I.det : -1. / I.det) * I.inverse.transpose();
+    return std::max(I.det, 1. / I.det);
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Dirichlet energy (1/n) sum s_i^2 (eq. 16). Not normalized (its minimum is the collapse to a
+/// point), not symmetric; 1 on rigid maps.
+struct Dirichlet
+{
+  std::string name() const { return "dirichlet"; }
+  bool is_normalized() const { return false; }
+  template <int n> bool is_symmetric() const { return false; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return s.squaredNorm() / n;
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    return (2. / n) * s;
+  }
+  template <int n>
+  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  {
+    if(dJ) *dJ = (2. / n) * J;
+    return J.squaredNorm() / n;
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Product of two measures, e.g. K * C (the paper's Fig. 9). Normalized / symmetric when both are.
+template <class A, class B>
+struct Product
+{
+  A a;
+  B b;
+  Product(const A& a = A(), const B& b = B()) : a(a), b(b) {}
+
+  std::string name() const { return a.name() + "*" + b.name(); }
+  bool is_normalized() const { return a.is_normalized() && b.is_normalized(); }
+  template <int n> bool is_symmetric() const { return a.template is_symmetric<n>() && b.template is_symmetric<n>(); }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return a.template value<n>(s) * b.template value<n>(s);
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    return a.template gradient<n>(s) * b.template value<n>(s) + a.template value<n>(s) * b.template gradient<n>(s);
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Weighted sum wa * A + wb * B of two measures. Normalized / symmetric when both are.
+template <class A, class B>
+struct Weighted_sum
+{
+  double weight_a;
+  A a;
+  double weight_b;
+  B b;
+  Weighted_sum(double weight_a, const A& a, double weight_b, const B& b)
+    : weight_a(weight_a), a(a), weight_b(weight_b), b(b) {}
+
+  std::string name() const
+  {
+    return std::to_string(weight_a) + "*" + a.name() + "+" + std::to_string(weight_b) + "*" + b.name();
+  }
+  bool is_normalized() const { return a.is_normalized() && b.is_normalized(); }
+  template <int n> bool is_symmetric() const { return a.template is_symmetric<n>() && b.template is_symmetric<n>(); }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return weight_a * a.template value<n>(s) + weight_b * b.template value<n>(s);
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    return weight_a * a.template gradient<n>(s) + weight_b * b.template gradient<n>(s);
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// A measure from two callables: `value(s)` and `gradient(s)`, each called with a
+/// `Singular_values<n>` (use generic lambdas to serve n = 2 and n = 3). The callables must
+/// return +infinity (value) where the map is not admissible, e.g. `s[n-1] <= 0`.
+template <class ValueFunction, class GradientFunction>
+struct Custom_measure
+{
+  ValueFunction value_function;
+  GradientFunction gradient_function;
+  std::string label;
+  bool normalized;
+  bool symmetric;
+
+  std::string name() const { return label; }
+  bool is_normalized() const { return normalized; }
+  template <int n> bool is_symmetric() const { return symmetric; }
+
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return value_function(s);
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    return gradient_function(s);
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Makes a `Custom_measure`. `normalized` tells the optimizer that the measure is infinite on
+/// degenerate cells (so an inverted start is an error); `symmetric` is informative.
+template <class ValueFunction, class GradientFunction>
+Custom_measure<ValueFunction, GradientFunction>
+make_measure(ValueFunction value, GradientFunction gradient, std::string name = "custom",
+             bool normalized = true, bool symmetric = false)
+{
+  return {std::move(value), std::move(gradient), std::move(name), normalized, symmetric};
+}
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The minimum m = D(1, ..., 1) of a measure (C.4): the value on rigid maps.
+template <int n, class Measure>
+double value_on_rigid_maps(const Measure& measure)
+{
+  return measure.template value<n>(Singular_values<n>::Ones());
+}
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// A regular distortion measure (Appendix C): normalized and symmetric.
+template <int n, class Measure>
+bool is_regular(const Measure& measure)
+{
+  return measure.is_normalized() && measure.template is_symmetric<n>();
+}
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_MEASURES_H

@@ -1,0 +1,58 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The package's own named parameters. CGAL 5.5 offers no hook to add chainable `.name()` members
+// to CGAL::Named_function_parameters, so each new name is a free function that takes an optional
+// existing pack and returns it extended:
+//   namespace DOP = CGAL::Distortion_optimization::parameters;
+//   auto np = DOP::vertex_weight_map(w, CGAL::parameters::vertex_point_map(vpm));
+// The result is an ordinary CGAL pack: CGAL's members (.number_of_iterations(...)) chain after it.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_PARAMETERS_H
+#define CGAL_DISTORTION_OPTIMIZATION_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The cell weights w(c, v) of eq. 23; the energy is sum_c w(c) D(J_c) with
+/// w(c) = sum_{v in c} omega(v) w(c, v) (Algorithm 1, step 2).
+enum class Cell_weighting
+{
+  UNIFORM,        ///< w(c, v) = 1
+  VOLUME,         ///< w(c, v) = volume(c)
+  AVERAGE_VOLUME  ///< w(c, v) = volume(c) / (number of vertices of c)
+};
+
+namespace internal_np {
+enum vertex_weight_map_t { vertex_weight_map };
+enum cell_distortion_map_t { cell_distortion_map };
+enum cell_weighting_t { cell_weighting };
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(TAG, NAME)                           \
+  template <class T, class NP = CGAL::parameters::Default_named_parameters>                  \
+  CGAL::Named_function_parameters<T, internal_np::TAG, NP>                                   \
+  NAME(const T& value, const NP& np = CGAL::parameters::default_values())                   \
+  {                                                                                          \
+    return CGAL::Named_function_parameters<T, internal_np::TAG, NP>(value, np);            \
+  }
+
+/// Vertex weights omega(v) > 0 (a readable vertex property map to a number); default 1.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_weight_map_t, vertex_weight_map)
+/// A writable cell (face) property map that receives the distortion of each cell.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_distortion_map_t, cell_distortion_map)
+/// A `Cell_weighting`; default `Cell_weighting::AVERAGE_VOLUME`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_weighting_t, cell_weighting)
+
+#undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_PARAMETERS_H

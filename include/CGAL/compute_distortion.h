@@ -1,0 +1,88 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_COMPUTE_DISTORTION_H
+#define CGAL_COMPUTE_DISTORTION_H
+
+#include <CGAL/Distortion_optimization/Distortion_statistics.h>
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/statistics.h>
+#include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Measures the distortion of the simplicial map that sends each vertex `v` of the triangle mesh
+`tm` from its source position to `get(target, v)`.
+
+Each face's Jacobian is computed in the face's own frame (eq. 20 of the paper; for a planar
+`Point_2` source, in the plane itself), its signed singular values give the measure's value
+(eq. 21), and the values are averaged with the weights of eq. 23.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam TargetMap a model of `ReadablePropertyMap` from vertex descriptors to a `Point_2`
+\tparam Measure a model of `DistortionMeasure` (see `measures.h`), e.g.
+        `Distortion_optimization::Conformal_dilatation`
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the source mesh; it is not modified
+\param target the image of each vertex
+\param measure the distortion measure
+\param np optional named parameters among:
+  - `CGAL::parameters::vertex_point_map`: source positions, `Point_2` (planar map) or `Point_3`
+    (surface to plane); default `get(CGAL::vertex_point, tm)`
+  - `Distortion_optimization::parameters::vertex_weight_map`: omega(v) > 0; default 1
+  - `Distortion_optimization::parameters::cell_distortion_map`: a writable face property map
+    to `double` that receives each face's distortion; default none
+
+\returns the weighted means, energies, extreme values and the number of inverted faces (counted
+with exact orientation predicates: a face is inverted when its image's orientation differs from
+the source's; surface faces count as positively oriented in their own frames).
+
+\throws Distortion_optimization::Invalid_input for an empty mesh, a face that is not a triangle,
+non-finite coordinates or weights, a degenerate source face, or a non-finite Jacobian.
+*/
+template <class TriangleMesh, class TargetMap, class Measure,
+          class NamedParameters = parameters::Default_named_parameters>
+Distortion_optimization::Distortion_statistics
+compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measure& measure,
+                   const NamedParameters& np = parameters::default_values())
+{
+  namespace DO = Distortion_optimization;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  const DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
+
+  std::vector<double> omega;
+  auto weights = get_parameter(np, DO::internal_np::vertex_weight_map);
+  if constexpr(!std::is_same<decltype(weights), internal_np::Param_not_found>::value)
+    omega = adapter.vertex_weights(weights);
+
+  auto cell_map = get_parameter(np, DO::internal_np::cell_distortion_map);
+  constexpr bool wants_cells = !std::is_same<decltype(cell_map), internal_np::Param_not_found>::value;
+  std::vector<double> per_cell;
+  const DO::Distortion_statistics stats =
+    DO::internal::evaluate<2>(adapter.map, measure, omega, wants_cells ? &per_cell : nullptr);
+  if constexpr(wants_cells)
+    for(std::size_t c = 0; c < per_cell.size(); ++c)
+      put(cell_map, adapter.face_of[c], per_cell[c]);
+  return stats;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_COMPUTE_DISTORTION_H

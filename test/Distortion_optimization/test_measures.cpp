@@ -1,0 +1,349 @@
+// Measures, signed SVD and the per-cell kernel (no mesh involved).
+
+#include <CGAL/Distortion_optimization/internal/cell_distortion.h>
+#include <CGAL/Distortion_optimization/measures.h>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <tuple>
+
+namespace DO = CGAL::Distortion_optimization;
+using DO::internal::Matrix;
+using DO::internal::Vector;
+
+namespace {
+
+const double inf = std::numeric_limits<double>::infinity();
+
+auto all_measures()
+{
+  auto custom = DO::make_measure(
+    [](const auto& s) { return (s.array() - 2.).square().sum(); },
+    [](const auto& s) { return (2. * (s.array() - 2.)).matrix().eval(); }, "custom", false, false);
+  return std::make_tuple(DO::Conformal_dilatation(), DO::Condition_number(), DO::MIPS(),
+                         DO::Isometric_dilatation(), DO::ARAP(), DO::Symmetric_dirichlet(),
+                         DO::Volume_distortion(), DO::Dirichlet(),
+                         DO::Product<DO::Conformal_dilatation, DO::Isometric_dilatation>(),
+                         DO::Weighted_sum<DO::Symmetric_dirichlet, DO::ARAP>(0.7, {}, 0.3, {}), custom);
+}
+
+template <class F>
+void for_each_measure(F f)
+{
+  std::apply([&](const auto&... m) { (f(m), ...); }, all_measures());
+}
+
+std::mt19937& rng()
+{
+  static std::mt19937 g(12345);
+  return g;
+}
+
+double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng()); }
+
+template <int n>
+Matrix<n> random_rotation()
+{
+  if constexpr(n == 2) {
+    const double a = uniform(-M_PI, M_PI);
+    Matrix<2> R;
+    R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    return R;
+  } else {
+    Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+    return q.normalized().toRotationMatrix();
+  }
+}
+
+template <int n>
+Matrix<n> with_singular_values(const Vector<n>& s)
+{
+  return random_rotation<n>() * s.asDiagonal() * random_rotation<n>().transpose();
+}
+
+// Independent formulas, written from the paper's equations 8-16.
+template <int n>
+double expected(const std::string& name, const Vector<n>& s)
+{
+  const double p = s.prod();
+  if(name == "conformal") {
+    if(n == 2) return s[0] / s[1];
+    return std::max(s[0] * s[1] / (s[2] * s[2]), s[0] * s[0] / (s[1] * s[2]));
+  }
+  if(name == "condition") return s[0] / s[n - 1];
+  if(name == "mips") return n == 2 ? s[0] / s[1] + s[1] / s[0] : s.squaredNorm() / std::cbrt(p * p);
+  if(name == "isometric") return std::max(s[0], 1 / s[n - 1]);
+  if(name == "arap") { double e = 0; for(int i = 0; i < n; ++i) e += (s[i] - 1) * (s[i] - 1); return e; }
+  if(name == "symmetric_dirichlet") { double e = 0; for(int i = 0; i < n; ++i) e += s[i] * s[i] + 1 / (s[i] * s[i]); return e / (2 * n); }
+  if(name == "volume") return std::max(p, 1 / p);
+  if(name == "dirichlet") return s.squaredNorm() / n;
+  if(name == "conformal*isometric") return expected<n>("conformal", s) * expected<n>("isometric", s);
+  if(name == "custom") return (s.array() - 2.).square().sum();
+  return 0.7 * expected<n>("symmetric_dirichlet", s) + 0.3 * expected<n>("arap", s);
+}
+
+template <int n>
+void check_closed_forms(const Vector<n>& s)
+{
+  for_each_measure([&](const auto& m) {
+    const double e = expected<n>(m.name(), s);
+    EXPECT_NEAR(m.template value<n>(s), e, 1e-13 * std::abs(e)) << m.name() << " n=" << n;
+    // Jacobians with these singular values, rotated at random on both sides (Definition 2.1).
+    for(int k = 0; k < 5; ++k) {
+      const Matrix<n> J = with_singular_values<n>(s);
+      EXPECT_NEAR(DO::internal::cell_distortion<n>(m, J), e, 1e-11 * std::abs(e)) << m.name() << " n=" << n;
+    }
+  });
+}
+
+} // namespace
+
+TEST(Measures, ClosedFormsOnDiagonalAndRotatedJacobians)
+{
+  check_closed_forms<2>(Vector<2>(3., 0.5));
+  check_closed_forms<2>(Vector<2>(1.3, 1.1));
+  check_closed_forms<3>(Vector<3>(3., 2., 0.5));
+  check_closed_forms<3>(Vector<3>(1.2, 0.9, 0.8));
+  check_closed_forms<3>(Vector<3>(4., 0.5, 0.4));   // K_O branch of eq. 8
+}
+
+TEST(Measures, MipsIsEquation10In2D)
+{
+  for(int k = 0; k < 20; ++k) {
+    const double a = uniform(0.1, 5), b = uniform(0.1, 5);
+    const Vector<2> s(std::max(a, b), std::min(a, b));
+    EXPECT_NEAR(DO::MIPS().value<2>(s), s[0] / s[1] + s[1] / s[0], 1e-13 * (s[0] / s[1]));
+  }
+}
+
+TEST(Measures, RigidMapsGiveTheMinimum)
+{
+  const std::map<std::string, double> m2 = {{"conformal", 1}, {"condition", 1}, {"mips", 2}, {"isometric", 1},
+    {"arap", 0}, {"symmetric_dirichlet", 1}, {"volume", 1}, {"dirichlet", 1}, {"conformal*isometric", 1}};
+  for_each_measure([&](const auto& m) {
+    auto it = m2.find(m.name());
+    if(it == m2.end()) return;
+    EXPECT_DOUBLE_EQ(DO::value_on_rigid_maps<2>(m), it->second) << m.name();
+    const double m3 = m.name() == "mips" ? 3. : it->second;
+    EXPECT_DOUBLE_EQ(DO::value_on_rigid_maps<3>(m), m3) << m.name();
+    EXPECT_NEAR(DO::internal::cell_distortion<3>(m, random_rotation<3>()), m3, 1e-12) << m.name();
+    EXPECT_NEAR(DO::internal::cell_distortion<2>(m, random_rotation<2>()), it->second, 1e-12) << m.name();
+  });
+}
+
+template <int n>
+void check_symmetry(const Vector<n>& s)
+{
+  Vector<n> inverse_s;
+  for(int i = 0; i < n; ++i) inverse_s[i] = 1. / s[n - 1 - i];
+  for_each_measure([&](const auto& m) {
+    const double a = m.template value<n>(s), b = m.template value<n>(inverse_s);
+    if(m.template is_symmetric<n>())
+      EXPECT_NEAR(a, b, 1e-12 * a) << m.name() << " n=" << n;
+    else
+      EXPECT_GT(std::abs(a - b), 1e-3 * std::abs(a)) << m.name() << " claims no symmetry, n=" << n;
+  });
+}
+
+TEST(Measures, SymmetricMeasuresAreInvariantUnderInversion)
+{
+  check_symmetry<2>(Vector<2>(2.5, 0.7));
+  check_symmetry<3>(Vector<3>(2.5, 1.4, 0.7));
+  EXPECT_TRUE(DO::is_regular<2>(DO::MIPS()));
+  EXPECT_FALSE(DO::is_regular<3>(DO::MIPS()));
+  EXPECT_FALSE(DO::is_regular<3>(DO::ARAP()));
+  EXPECT_TRUE(DO::is_regular<3>(DO::Symmetric_dirichlet()));
+}
+
+template <int n>
+void check_barrier()
+{
+  for_each_measure([&](const auto& m) {
+    if(!m.is_normalized()) return;
+    Vector<n> s = Vector<n>::Constant(1.5);
+    double previous = m.template value<n>(s);
+    for(double t : {1e-2, 1e-4, 1e-6, 1e-8, 1e-12}) {
+      s[n - 1] = t;
+      const double v = m.template value<n>(s);
+      EXPECT_GT(v, previous) << m.name();
+      previous = v;
+    }
+    EXPECT_GT(previous, 1e6) << m.name();
+    s[n - 1] = 0;
+    EXPECT_EQ(m.template value<n>(s), inf) << m.name();
+    s[n - 1] = -0.5;
+    EXPECT_EQ(m.template value<n>(s), inf) << m.name();
+    Matrix<n> reflection = Matrix<n>::Identity();
+    reflection(0, 0) = -1;
+    Matrix<n> dJ;
+    EXPECT_EQ(DO::internal::cell_distortion<n>(m, reflection), inf) << m.name();
+    EXPECT_EQ(DO::internal::cell_distortion<n>(m, reflection, dJ), inf) << m.name();
+    EXPECT_TRUE(dJ.array().isNaN().all()) << m.name();
+  });
+}
+
+TEST(Measures, NormalizedMeasuresGrowToInfinityAndRejectInversions)
+{
+  check_barrier<2>();
+  check_barrier<3>();
+}
+
+template <int n>
+Matrix<n> random_well_conditioned()
+{
+  // Distinct singular values: max-type measures (K, C, condition) have kinks where they meet,
+  // and central differences straddling a kink are no reference.
+  Vector<n> s;
+  do {
+    for(int i = 0; i < n; ++i) s[i] = uniform(0.5, 2.);
+    std::sort(s.data(), s.data() + n, std::greater<double>());
+  } while(((s.head(n - 1) - s.tail(n - 1)).array() < 0.05).any());
+  return with_singular_values<n>(s);
+}
+
+template <int n>
+void check_gradient_against_finite_differences()
+{
+  for_each_measure([&](const auto& m) {
+    for(int trial = 0; trial < 50; ++trial) {
+      const Matrix<n> J = random_well_conditioned<n>();
+      Matrix<n> dJ;
+      DO::internal::cell_distortion<n>(m, J, dJ);
+      Matrix<n> fd;
+      const double h = 1e-6;
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j) {
+          Matrix<n> Jp = J, Jm = J;
+          Jp(i, j) += h;
+          Jm(i, j) -= h;
+          fd(i, j) = (DO::internal::cell_distortion<n>(m, Jp) - DO::internal::cell_distortion<n>(m, Jm)) / (2 * h);
+        }
+      EXPECT_LE((dJ - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << "\nJ=\n" << J;
+      // And the derivative in sigma itself.
+      const Vector<n> s = DO::internal::signed_singular_values(J);
+      const Vector<n> g = m.template gradient<n>(s);
+      for(int i = 0; i < n; ++i) {
+        Vector<n> sp = s, sm = s;
+        sp[i] += h;
+        sm[i] -= h;
+        const double fdi = (m.template value<n>(sp) - m.template value<n>(sm)) / (2 * h);
+        EXPECT_NEAR(g[i], fdi, 1e-6 * std::max(1., std::abs(fdi))) << m.name() << " i=" << i;
+      }
+    }
+  });
+}
+
+TEST(Measures, JacobianGradientMatchesFiniteDifferences2D) { check_gradient_against_finite_differences<2>(); }
+TEST(Measures, JacobianGradientMatchesFiniteDifferences3D) { check_gradient_against_finite_differences<3>(); }
+
+template <int n, class M>
+void check_svd_free_form(const M& m)
+{
+  for(int trial = 0; trial < 50; ++trial) {
+    const Matrix<n> J = random_well_conditioned<n>();
+    Matrix<n> a = Matrix<n>::Zero(), b;
+    const double va = m.template value_without_svd<n>(J, &a);
+    DO::internal::Signed_svd<n> svd;
+    DO::internal::signed_svd(J, svd);
+    const double vb = m.template value<n>(svd.sigma);
+    b = svd.U * m.template gradient<n>(svd.sigma).asDiagonal() * svd.V.transpose();
+    EXPECT_NEAR(va, vb, 1e-12 * vb) << m.name();
+    EXPECT_LE((a - b).norm(), 1e-11 * b.norm()) << m.name();
+  }
+}
+
+TEST(Measures, SvdFreeFormsAgreeWithTheSvdForms)
+{
+  static_assert(DO::internal::Has_value_without_svd<DO::Symmetric_dirichlet, 3>::value, "");
+  static_assert(!DO::internal::Has_value_without_svd<DO::Conformal_dilatation, 3>::value, "");
+  check_svd_free_form<2>(DO::Symmetric_dirichlet());
+  check_svd_free_form<3>(DO::Symmetric_dirichlet());
+  check_svd_free_form<2>(DO::MIPS());
+  check_svd_free_form<3>(DO::MIPS());
+  check_svd_free_form<2>(DO::Volume_distortion());
+  check_svd_free_form<3>(DO::Volume_distortion());
+  check_svd_free_form<2>(DO::Dirichlet());
+  check_svd_free_form<3>(DO::Dirichlet());
+}
+
+// ---------------------------------------------------------------- signed SVD
+
+template <int n>
+void check_svd(const Matrix<n>& J, double tolerance)
+{
+  std::ostringstream trace;
+  trace.precision(17);
+  trace << "J =\n" << J;
+  SCOPED_TRACE(trace.str());
+  DO::internal::Signed_svd<n> a, b;
+  ASSERT_TRUE(DO::internal::signed_svd(J, a));
+  ASSERT_TRUE(DO::internal::signed_svd_jacobi(J, b));
+  const double scale = std::max(b.sigma[0], 1e-300);
+  for(int i = 0; i < n; ++i)
+    EXPECT_NEAR(a.sigma[i], b.sigma[i], tolerance * scale) << "i=" << i << "\nJ=\n" << J;
+  for(int i = 0; i + 1 < n; ++i) EXPECT_GE(a.sigma[i], std::abs(a.sigma[i + 1]) - tolerance * scale);
+  EXPECT_NEAR(a.sigma.prod(), J.determinant(), tolerance * std::pow(scale, n));
+  EXPECT_LE((a.U * a.sigma.asDiagonal() * a.V.transpose() - J).norm(), tolerance * scale);
+  EXPECT_NEAR(a.U.determinant(), 1., 1e-12);
+  EXPECT_NEAR(a.V.determinant(), 1., 1e-12);
+  EXPECT_LE((a.U.transpose() * a.U - Matrix<n>::Identity()).norm(), 1e-12);
+  EXPECT_LE((a.V.transpose() * a.V - Matrix<n>::Identity()).norm(), 1e-12);
+  const Vector<n> values_only = DO::internal::signed_singular_values(J);
+  EXPECT_LE((values_only - b.sigma).norm(), tolerance * scale);
+  if(std::abs(J.determinant()) > 1e-10 * std::pow(scale, n)) {
+    EXPECT_EQ(a.sigma[n - 1] > 0, J.determinant() > 0);
+  }
+}
+
+template <int n>
+void check_svd_family()
+{
+  std::vector<Vector<n>> cases;
+  if constexpr(n == 2) {
+    cases = {Vector<2>(1, 1), Vector<2>(2, 2), Vector<2>(3, 1e-9), Vector<2>(1, 1 - 1e-12), Vector<2>(5, -0.5),
+             Vector<2>(1, -1), Vector<2>(1e-3, 1e-3), Vector<2>(1, 0)};
+  } else {
+    cases = {Vector<3>(1, 1, 1), Vector<3>(2, 2, 1), Vector<3>(2, 1, 1), Vector<3>(3, 1e-4, 1e-9),
+             Vector<3>(1, 1 - 1e-10, 1 - 2e-10), Vector<3>(4, 2, -0.5), Vector<3>(1, 1, -1), Vector<3>(1, 0.5, 0),
+             Vector<3>(2, 2, 2e-10)};
+  }
+  for(const auto& s : cases)
+    for(int k = 0; k < 20; ++k) check_svd<n>(with_singular_values<n>(s), 1e-12);
+  for(int k = 0; k < 200; ++k) {
+    Matrix<n> J = Matrix<n>::Random();
+    check_svd<n>(J, 1e-12);
+  }
+  check_svd<n>(Matrix<n>::Identity(), 1e-15);
+  check_svd<n>(Matrix<n>::Zero(), 1e-15);
+}
+
+TEST(Svd, ClosedForm2DMatchesJacobiSvd) { check_svd_family<2>(); }
+TEST(Svd, ClosedForm3DMatchesJacobiSvd) { check_svd_family<3>(); }
+
+TEST(Svd, NonFiniteEntriesAreReportedNotPropagatedSilently)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for(double bad : {nan, inf, -inf}) {
+    Matrix<2> J2 = Matrix<2>::Identity();
+    J2(0, 1) = bad;
+    Matrix<3> J3 = Matrix<3>::Identity();
+    J3(2, 0) = bad;
+    DO::internal::Signed_svd<2> s2;
+    DO::internal::Signed_svd<3> s3;
+    EXPECT_FALSE(DO::internal::signed_svd(J2, s2));
+    EXPECT_FALSE(DO::internal::signed_svd(J3, s3));
+    EXPECT_TRUE(s2.sigma.array().isNaN().all());
+    EXPECT_TRUE(s3.sigma.array().isNaN().all());
+    for_each_measure([&](const auto& m) {
+      Matrix<3> dJ;
+      EXPECT_TRUE(std::isnan(DO::internal::cell_distortion<2>(m, J2))) << m.name();
+      EXPECT_TRUE(std::isnan(DO::internal::cell_distortion<3>(m, J3, dJ))) << m.name();
+      EXPECT_TRUE(dJ.array().isNaN().all()) << m.name();
+    });
+  }
+}

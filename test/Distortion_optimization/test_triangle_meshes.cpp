@@ -1,0 +1,242 @@
+// compute_distortion on CGAL::Surface_mesh: planar maps and surface-to-plane maps.
+
+#include <CGAL/compute_distortion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace DO = CGAL::Distortion_optimization;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point_2 = K::Point_2;
+using Point_3 = K::Point_3;
+using Mesh3 = CGAL::Surface_mesh<Point_3>;
+using Mesh2 = CGAL::Surface_mesh<Point_2>;
+
+namespace {
+
+// A (k x k)-square grid on [0,1]^2 split into 2 k^2 triangles, counter-clockwise.
+template <class Mesh, class MakePoint>
+Mesh grid(int k, MakePoint make_point)
+{
+  Mesh m;
+  std::vector<typename Mesh::Vertex_index> v;
+  for(int j = 0; j <= k; ++j)
+    for(int i = 0; i <= k; ++i) v.push_back(m.add_vertex(make_point(double(i) / k, double(j) / k)));
+  auto at = [&](int i, int j) { return v[j * (k + 1) + i]; };
+  for(int j = 0; j < k; ++j)
+    for(int i = 0; i < k; ++i) {
+      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return m;
+}
+
+Mesh2 planar_grid(int k) { return grid<Mesh2>(k, [](double x, double y) { return Point_2(x, y); }); }
+Mesh3 flat_grid(int k) { return grid<Mesh3>(k, [](double x, double y) { return Point_3(x, y, 0); }); }
+
+template <class Mesh, class F>
+typename Mesh::template Property_map<typename Mesh::Vertex_index, Point_2> make_target(Mesh& m, F f)
+{
+  auto uv = m.template add_property_map<typename Mesh::Vertex_index, Point_2>("v:target").first;
+  for(auto v : m.vertices()) uv[v] = f(m.point(v));
+  return uv;
+}
+
+// Expected values of every measure for the singular values (2, 1) of (x, y) -> (2x, y).
+struct Expected_stretch
+{
+  const char* name;
+  double value;
+};
+const Expected_stretch stretch_values[] = {{"conformal", 2}, {"condition", 2}, {"mips", 2.5},
+  {"isometric", 2}, {"arap", 1}, {"symmetric_dirichlet", (4 + 1 + 0.25 + 1) / 4.}, {"volume", 2},
+  {"dirichlet", 2.5}};
+
+template <class Mesh>
+void check_stretch(Mesh& m)
+{
+  auto uv = make_target(m, [](const auto& p) { return Point_2(2 * p.x(), p.y()); });
+  auto check = [&](const auto& measure) {
+    const DO::Distortion_statistics s = CGAL::compute_distortion(m, uv, measure);
+    double expected = -1;
+    for(const auto& e : stretch_values)
+      if(measure.name() == e.name) expected = e.value;
+    EXPECT_NEAR(s.mean_volume, expected, 1e-12) << measure.name();
+    EXPECT_NEAR(s.mean_uniform, expected, 1e-12) << measure.name();
+    EXPECT_NEAR(s.min, expected, 1e-12) << measure.name();
+    EXPECT_NEAR(s.max, expected, 1e-12) << measure.name();
+    EXPECT_EQ(s.inverted_cells, 0u);
+    EXPECT_EQ(s.cells, m.number_of_faces());
+  };
+  check(DO::Conformal_dilatation());
+  check(DO::Condition_number());
+  check(DO::MIPS());
+  check(DO::Isometric_dilatation());
+  check(DO::ARAP());
+  check(DO::Symmetric_dirichlet());
+  check(DO::Volume_distortion());
+  check(DO::Dirichlet());
+}
+
+} // namespace
+
+TEST(ComputeDistortion, AffineStretchOfAPlanarMesh)
+{
+  Mesh2 m = planar_grid(4);
+  check_stretch(m);
+}
+
+TEST(ComputeDistortion, AffineStretchOfAFlatSurfaceMesh)
+{
+  Mesh3 m = flat_grid(4);
+  check_stretch(m);
+}
+
+TEST(ComputeDistortion, IsometricFlatteningOfATiltedSurfaceIsRigid)
+{
+  // The grid bent along a crease x = 0.5 into 3D; unfolding it is an isometry.
+  const double a = 0.7;
+  Mesh3 m = grid<Mesh3>(6, [&](double x, double y) {
+    return x <= 0.5 ? Point_3(x, y, 0) : Point_3(0.5 + (x - 0.5) * std::cos(a), y, (x - 0.5) * std::sin(a));
+  });
+  auto uv = make_target(m, [&](const Point_3& p) {
+    const double x = p.x() <= 0.5 + 1e-12 && p.z() == 0 ? p.x() : 0.5 + std::hypot(p.x() - 0.5, p.z());
+    return Point_2(x, p.y());
+  });
+  EXPECT_NEAR(CGAL::compute_distortion(m, uv, DO::Symmetric_dirichlet()).max, 1., 1e-12);
+  EXPECT_NEAR(CGAL::compute_distortion(m, uv, DO::Isometric_dilatation()).max, 1., 1e-12);
+  EXPECT_NEAR(CGAL::compute_distortion(m, uv, DO::ARAP()).max, 0., 1e-12);
+  EXPECT_NEAR(CGAL::compute_distortion(m, uv, DO::MIPS()).max, 2., 1e-12);
+}
+
+TEST(ComputeDistortion, WeightedMeansAgreeWithABruteForceSum)
+{
+  // Graded along x, so that face areas differ and the weightings give different means.
+  Mesh3 m = grid<Mesh3>(5, [](double x, double y) { return Point_3(x + 0.8 * x * x, y, 0); });
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> noise(-0.03, 0.03), weight(0.5, 2.);
+  auto uv = make_target(m, [&](const Point_3& p) { return Point_2(p.x() + noise(rng), p.y() * 1.5 + noise(rng)); });
+  auto omega = m.add_property_map<Mesh3::Vertex_index, double>("v:omega").first;
+  for(auto v : m.vertices()) omega[v] = weight(rng);
+  auto per_face = m.add_property_map<Mesh3::Face_index, double>("f:distortion").first;
+
+  const DO::Conformal_dilatation measure;
+  const DO::Distortion_statistics s = CGAL::compute_distortion(m, uv, measure,
+    DO::parameters::cell_distortion_map(per_face, DO::parameters::vertex_weight_map(omega)));
+
+  // Brute force: each triangle's K from its own 2x2 Jacobian in closed form.
+  double eu = 0, wu = 0, ev = 0, wv = 0, mn = 1e300, mx = 0;
+  for(auto f : m.faces()) {
+    std::vector<Mesh3::Vertex_index> vs(m.vertices_around_face(m.halfedge(f)).begin(),
+                                        m.vertices_around_face(m.halfedge(f)).end());
+    const Point_3 &p0 = m.point(vs[0]), &p1 = m.point(vs[1]), &p2 = m.point(vs[2]);
+    double S[4] = {p1.x() - p0.x(), p2.x() - p0.x(), p1.y() - p0.y(), p2.y() - p0.y()};
+    double T[4] = {uv[vs[1]].x() - uv[vs[0]].x(), uv[vs[2]].x() - uv[vs[0]].x(),
+                   uv[vs[1]].y() - uv[vs[0]].y(), uv[vs[2]].y() - uv[vs[0]].y()};
+    const double dS = S[0] * S[3] - S[1] * S[2];
+    const double Si[4] = {S[3] / dS, -S[1] / dS, -S[2] / dS, S[0] / dS};
+    const double J[4] = {T[0] * Si[0] + T[1] * Si[2], T[0] * Si[1] + T[1] * Si[3],
+                         T[2] * Si[0] + T[3] * Si[2], T[2] * Si[1] + T[3] * Si[3]};
+    const double fro2 = J[0] * J[0] + J[1] * J[1] + J[2] * J[2] + J[3] * J[3];
+    const double det = J[0] * J[3] - J[1] * J[2];
+    // s1/s2 with s1^2 + s2^2 = |J|^2 and s1 s2 = det.
+    const double s1 = std::sqrt(0.5 * (fro2 + std::sqrt(fro2 * fro2 - 4 * det * det)));
+    const double k = s1 * s1 / det;
+    EXPECT_NEAR(per_face[f], k, 1e-10 * k);
+    const double w = omega[vs[0]] + omega[vs[1]] + omega[vs[2]], area = std::abs(dS) / 2;
+    eu += w * k; wu += w; ev += w * area * k; wv += w * area;
+    mn = std::min(mn, k); mx = std::max(mx, k);
+  }
+  EXPECT_NEAR(s.mean_uniform, eu / wu, 1e-12 * s.mean_uniform);
+  EXPECT_NEAR(s.mean_volume, ev / wv, 1e-12 * s.mean_volume);
+  EXPECT_NEAR(s.mean_average_volume, ev / wv, 1e-12 * s.mean_volume);
+  EXPECT_NEAR(s.energy_uniform, eu, 1e-12 * eu);
+  EXPECT_NEAR(s.energy_volume, ev, 1e-12 * ev);
+  EXPECT_NEAR(s.energy_average_volume, ev / 3, 1e-12 * ev);
+  EXPECT_NE(s.mean_uniform, s.mean_volume);
+  EXPECT_NEAR(s.min, mn, 1e-12 * mn);
+  EXPECT_NEAR(s.max, mx, 1e-12 * mx);
+}
+
+TEST(ComputeDistortion, InvertedTrianglesAreCountedExactly)
+{
+  Mesh2 m = planar_grid(3);
+  auto uv = make_target(m, [](const Point_2& p) { return p; });
+  // Move an interior vertex across its neighbours: some triangles flip.
+  Mesh2::Vertex_index moved(5);   // (1/3, 1/3)
+  uv[moved] = Point_2(0.9, 0.9);
+  const auto s = CGAL::compute_distortion(m, uv, DO::Conformal_dilatation());
+  EXPECT_GT(s.inverted_cells, 0u);
+  EXPECT_EQ(s.max, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(s.mean_volume, std::numeric_limits<double>::infinity());
+  // ARAP is finite on inverted cells, the count is the same.
+  const auto a = CGAL::compute_distortion(m, uv, DO::ARAP());
+  EXPECT_EQ(a.inverted_cells, s.inverted_cells);
+  EXPECT_LT(a.max, std::numeric_limits<double>::infinity());
+
+  // A triangle mapped to a segment is degenerate: counted, and K is infinite.
+  auto flat = make_target(m, [](const Point_2& p) { return Point_2(p.x(), 0); });
+  const auto d = CGAL::compute_distortion(m, flat, DO::Conformal_dilatation());
+  EXPECT_EQ(d.inverted_cells, m.number_of_faces());
+}
+
+TEST(ComputeDistortion, ClockwiseSourceKeepsItsOrientation)
+{
+  // A planar mesh whose faces are clockwise: the identity map is not inverted, a mirror is.
+  Mesh2 m;
+  auto a = m.add_vertex(Point_2(0, 0)), b = m.add_vertex(Point_2(0, 1)), c = m.add_vertex(Point_2(1, 0));
+  m.add_face(a, b, c);
+  auto same = make_target(m, [](const Point_2& p) { return p; });
+  auto s = CGAL::compute_distortion(m, same, DO::Conformal_dilatation());
+  EXPECT_EQ(s.inverted_cells, 0u);
+  EXPECT_NEAR(s.max, 1., 1e-14);
+  auto mirror = make_target(m, [](const Point_2& p) { return Point_2(-p.x(), p.y()); });
+  EXPECT_EQ(CGAL::compute_distortion(m, mirror, DO::Conformal_dilatation()).inverted_cells, 1u);
+}
+
+TEST(ComputeDistortion, BadInputIsRejectedWithAClearMessage)
+{
+  auto expect_error = [](auto&& f, const std::string& fragment) {
+    try {
+      f();
+      ADD_FAILURE() << "no exception; expected one about '" << fragment << "'";
+    } catch(const DO::Invalid_input& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  Mesh2 empty;
+  auto empty_uv = make_target(empty, [](const Point_2& p) { return p; });
+  expect_error([&] { CGAL::compute_distortion(empty, empty_uv, DO::MIPS()); }, "no face");
+
+  Mesh2 m = planar_grid(2);
+  auto uv = make_target(m, [](const Point_2& p) { return p; });
+  uv[Mesh2::Vertex_index(4)] = Point_2(std::numeric_limits<double>::quiet_NaN(), 0);
+  expect_error([&] { CGAL::compute_distortion(m, uv, DO::MIPS()); }, "vertex 4 has a non-finite target");
+
+  Mesh2 degenerate;
+  auto a = degenerate.add_vertex(Point_2(0, 0)), b = degenerate.add_vertex(Point_2(1, 1)),
+       c = degenerate.add_vertex(Point_2(2, 2));
+  degenerate.add_face(a, b, c);
+  auto duv = make_target(degenerate, [](const Point_2& p) { return p; });
+  expect_error([&] { CGAL::compute_distortion(degenerate, duv, DO::MIPS()); }, "source face 0 is degenerate");
+
+  Mesh2 quad;
+  std::vector<Mesh2::Vertex_index> q = {quad.add_vertex(Point_2(0, 0)), quad.add_vertex(Point_2(1, 0)),
+                                        quad.add_vertex(Point_2(1, 1)), quad.add_vertex(Point_2(0, 1))};
+  quad.add_face(q);
+  auto quv = make_target(quad, [](const Point_2& p) { return p; });
+  expect_error([&] { CGAL::compute_distortion(quad, quv, DO::MIPS()); }, "face 0 is not a triangle");
+
+  Mesh2 w = planar_grid(2);
+  auto wuv = make_target(w, [](const Point_2& p) { return p; });
+  auto omega = w.add_property_map<Mesh2::Vertex_index, double>("v:w", 1.).first;
+  omega[Mesh2::Vertex_index(2)] = 0;
+  expect_error([&] { CGAL::compute_distortion(w, wuv, DO::MIPS(), DO::parameters::vertex_weight_map(omega)); },
+               "vertex 2 has a weight");
+}
