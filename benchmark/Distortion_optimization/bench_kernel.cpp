@@ -1,6 +1,8 @@
 // Energy + gradient throughput of the per-cell kernel, per measure, 2D and 3D, one thread:
 // for every cell, J = Ds Dm^-1, D(J), dD/dJ and the n+1 vertex gradients accumulated into a
 // per-vertex array (what one solver pass over the mesh costs). Also the 3x3 SVD variants.
+// Two sizes: a mesh that stays in the L2 cache (the kernel's own speed, and what a local solver
+// sees on a vertex ring) and a large one (bounded by memory bandwidth: each tet streams ~100 bytes).
 //
 //   build/benchmark/Distortion_optimization/bench_kernel
 
@@ -75,7 +77,7 @@ DI::Simplicial_map<n> noisy_grid(int k)
 template <int n, class Measure>
 void energy_and_gradient(benchmark::State& state)
 {
-  const DI::Simplicial_map<n> map = noisy_grid<n>(n == 2 ? 300 : 40);
+  const DI::Simplicial_map<n> map = noisy_grid<n>(static_cast<int>(state.range(0)));
   std::vector<DI::Vector<n>> gradient(map.number_of_vertices());
   std::array<DI::Vector<n>, n + 1> g;
   const Measure measure{};
@@ -111,9 +113,10 @@ void svd(benchmark::State& state)
 
 } // namespace
 
-#define DISTORTION_BENCH(MEASURE)                                                         \
-  BENCHMARK_TEMPLATE(energy_and_gradient, 2, DO::MEASURE)->Unit(benchmark::kMillisecond); \
-  BENCHMARK_TEMPLATE(energy_and_gradient, 3, DO::MEASURE)->Unit(benchmark::kMillisecond);
+// Grid sizes: 2D 50 (5K triangles) and 300 (180K); 3D 10 (6K tets) and 40 (384K).
+#define DISTORTION_BENCH(MEASURE)                                                                   \
+  BENCHMARK_TEMPLATE(energy_and_gradient, 2, DO::MEASURE)->Arg(50)->Arg(300)->Unit(benchmark::kMicrosecond); \
+  BENCHMARK_TEMPLATE(energy_and_gradient, 3, DO::MEASURE)->Arg(10)->Arg(40)->Unit(benchmark::kMicrosecond);
 
 DISTORTION_BENCH(Symmetric_dirichlet)
 DISTORTION_BENCH(MIPS)

@@ -1,9 +1,8 @@
 // compute_distortion on CGAL::Surface_mesh: planar maps and surface-to-plane maps.
 
-#include <CGAL/compute_distortion.h>
+#include "test_meshes.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/compute_distortion.h>
 
 #include <gtest/gtest.h>
 
@@ -11,42 +10,9 @@
 #include <limits>
 #include <random>
 
-namespace DO = CGAL::Distortion_optimization;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point_2 = K::Point_2;
-using Point_3 = K::Point_3;
-using Mesh3 = CGAL::Surface_mesh<Point_3>;
-using Mesh2 = CGAL::Surface_mesh<Point_2>;
+using namespace test_meshes;
 
 namespace {
-
-// A (k x k)-square grid on [0,1]^2 split into 2 k^2 triangles, counter-clockwise.
-template <class Mesh, class MakePoint>
-Mesh grid(int k, MakePoint make_point)
-{
-  Mesh m;
-  std::vector<typename Mesh::Vertex_index> v;
-  for(int j = 0; j <= k; ++j)
-    for(int i = 0; i <= k; ++i) v.push_back(m.add_vertex(make_point(double(i) / k, double(j) / k)));
-  auto at = [&](int i, int j) { return v[j * (k + 1) + i]; };
-  for(int j = 0; j < k; ++j)
-    for(int i = 0; i < k; ++i) {
-      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  return m;
-}
-
-Mesh2 planar_grid(int k) { return grid<Mesh2>(k, [](double x, double y) { return Point_2(x, y); }); }
-Mesh3 flat_grid(int k) { return grid<Mesh3>(k, [](double x, double y) { return Point_3(x, y, 0); }); }
-
-template <class Mesh, class F>
-typename Mesh::template Property_map<typename Mesh::Vertex_index, Point_2> make_target(Mesh& m, F f)
-{
-  auto uv = m.template add_property_map<typename Mesh::Vertex_index, Point_2>("v:target").first;
-  for(auto v : m.vertices()) uv[v] = f(m.point(v));
-  return uv;
-}
 
 // Expected values of every measure for the singular values (2, 1) of (x, y) -> (2x, y).
 struct Expected_stretch
@@ -133,23 +99,12 @@ TEST(ComputeDistortion, WeightedMeansAgreeWithABruteForceSum)
   // Brute force: each triangle's K from its own 2x2 Jacobian in closed form.
   double eu = 0, wu = 0, ev = 0, wv = 0, mn = 1e300, mx = 0;
   for(auto f : m.faces()) {
-    std::vector<Mesh3::Vertex_index> vs(m.vertices_around_face(m.halfedge(f)).begin(),
-                                        m.vertices_around_face(m.halfedge(f)).end());
-    const Point_3 &p0 = m.point(vs[0]), &p1 = m.point(vs[1]), &p2 = m.point(vs[2]);
-    double S[4] = {p1.x() - p0.x(), p2.x() - p0.x(), p1.y() - p0.y(), p2.y() - p0.y()};
-    double T[4] = {uv[vs[1]].x() - uv[vs[0]].x(), uv[vs[2]].x() - uv[vs[0]].x(),
-                   uv[vs[1]].y() - uv[vs[0]].y(), uv[vs[2]].y() - uv[vs[0]].y()};
-    const double dS = S[0] * S[3] - S[1] * S[2];
-    const double Si[4] = {S[3] / dS, -S[1] / dS, -S[2] / dS, S[0] / dS};
-    const double J[4] = {T[0] * Si[0] + T[1] * Si[2], T[0] * Si[1] + T[1] * Si[3],
-                         T[2] * Si[0] + T[3] * Si[2], T[2] * Si[1] + T[3] * Si[3]};
-    const double fro2 = J[0] * J[0] + J[1] * J[1] + J[2] * J[2] + J[3] * J[3];
-    const double det = J[0] * J[3] - J[1] * J[2];
-    // s1/s2 with s1^2 + s2^2 = |J|^2 and s1 s2 = det.
-    const double s1 = std::sqrt(0.5 * (fro2 + std::sqrt(fro2 * fro2 - 4 * det * det)));
-    const double k = s1 * s1 / det;
+    double area;
+    const auto sv = brute_force_singular_values(m, uv, f, &area);
+    const double k = brute_force_measure("conformal", sv.first, sv.second);
     EXPECT_NEAR(per_face[f], k, 1e-10 * k);
-    const double w = omega[vs[0]] + omega[vs[1]] + omega[vs[2]], area = std::abs(dS) / 2;
+    double w = 0;
+    for(auto v : m.vertices_around_face(m.halfedge(f))) w += omega[v];
     eu += w * k; wu += w; ev += w * area * k; wv += w * area;
     mn = std::min(mn, k); mx = std::max(mx, k);
   }

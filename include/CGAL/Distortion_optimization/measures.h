@@ -8,8 +8,9 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 #define CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 
+#include <CGAL/Distortion_optimization/internal/cofactor.h>
+
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -65,17 +66,12 @@ Singular_values<n> unit(int i)
   return Singular_values<n>::Unit(i);
 }
 
-// Shared by the measures that need no SVD: the squared Frobenius norm of J, of J^-1, and det J.
+// What the measures that need no SVD share: det J, |J|^2 and the cofactor matrix.
 template <int n>
-struct Invariants
+struct Invariants : internal::Cofactor_and_determinant<n>
 {
-  double det, norm2;
-  Jacobian<n> inverse;
-  explicit Invariants(const Jacobian<n>& J) : det(J.determinant()), norm2(J.squaredNorm())
-  {
-    if(det > 0)
-      inverse = J.inverse();
-  }
+  double norm2;
+  explicit Invariants(const Jacobian<n>& J) : internal::Cofactor_and_determinant<n>(J), norm2(J.squaredNorm()) {}
 };
 
 } // namespace measures_internal
@@ -166,8 +162,8 @@ struct MIPS
   {
     measures_internal::Invariants<n> I(J);
     if(!(I.det > 0)) return measures_internal::infinity;
-    const double scale = std::pow(I.det, 2. / n), v = I.norm2 / scale;
-    if(dJ) *dJ = (2. / scale) * J - (2. / n) * v * I.inverse.transpose();
+    const double scale = n == 2 ? I.det : std::cbrt(I.det * I.det), v = I.norm2 / scale;
+    if(dJ) *dJ = (2. / scale) * J - (2. / n) * (v / I.det) * I.cofactor;
     return v;
   }
 };
@@ -236,17 +232,18 @@ struct Symmetric_dirichlet
     if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
     return (s.array() - s.array().cube().inverse()).matrix() / n;
   }
-  // |J|^2 + |J^-1|^2, derivative 2J - 2 J^-T J^-1 J^-T.
+  // |J|^2 + |J^-1|^2 with J^-T = C / det; derivative 2J - 2 J^-T J^-1 J^-T = 2J - 2 C C^T C / det^3.
   template <int n>
   double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
   {
     measures_internal::Invariants<n> I(J);
     if(!(I.det > 0)) return measures_internal::infinity;
+    const double inverse_det = 1. / I.det;
     if(dJ) {
-      const Jacobian<n> inverse_t = I.inverse.transpose();
-      *dJ = (J - inverse_t * I.inverse * inverse_t) / n;
+      const Jacobian<n> CCt = I.cofactor * I.cofactor.transpose();
+      *dJ = (J - (inverse_det * inverse_det * inverse_det) * (CCt * I.cofactor)) / n;
     }
-    return (I.norm2 + I.inverse.squaredNorm()) / (2 * n);
+    return (I.norm2 + I.cofactor.squaredNorm() * inverse_det * inverse_det) / (2 * n);
   }
 };
 
@@ -271,13 +268,13 @@ struct Volume_distortion
     if(!(d > 0)) return measures_internal::nan_gradient<n>();
     return (d >= 1 ? d : -1. / d) * s.cwiseInverse();
   }
-  // d(det)/dJ = det J^-T.
+  // d(det)/dJ = C, the cofactor matrix.
   template <int n>
   double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
   {
     measures_internal::Invariants<n> I(J);
     if(!(I.det > 0)) return measures_internal::infinity;
-    if(dJ) *dJ = (I.det >= 1 ? I.det : -1. / I.det) * I.inverse.transpose();
+    if(dJ) *dJ = (I.det >= 1 ? 1. : -1. / (I.det * I.det)) * I.cofactor;
     return std::max(I.det, 1. / I.det);
   }
 };

@@ -26,10 +26,29 @@ enum class Cell_weighting
   AVERAGE_VOLUME  ///< w(c, v) = volume(c) / (number of vertices of c)
 };
 
+/// \ingroup PkgDistortionOptimizationRef
+/// How one vertex's local problem (26) is solved at each visit.
+enum class Local_solver
+{
+  GRADIENT_DESCENT, ///< one Armijo step along the ring gradient (Algorithm 2), the default
+  BFGS              ///< a few quasi-Newton steps with an n x n inverse-Hessian estimate
+};
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The order in which a sweep visits the free vertices.
+enum class Vertex_order
+{
+  GREEDY,          ///< the paper's Algorithm 2: always the most distorted remaining vertex (live priority queue)
+  SORTED_PER_SWEEP ///< sorted once by distortion at the start of each sweep
+};
+
 namespace internal_np {
 enum vertex_weight_map_t { vertex_weight_map };
 enum cell_distortion_map_t { cell_distortion_map };
 enum cell_weighting_t { cell_weighting };
+enum convergence_threshold_t { convergence_threshold };
+enum local_solver_t { local_solver };
+enum vertex_order_t { vertex_order };
 } // namespace internal_np
 
 namespace parameters {
@@ -48,6 +67,13 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_weight_map_t, vertex_wei
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_distortion_map_t, cell_distortion_map)
 /// A `Cell_weighting`; default `Cell_weighting::AVERAGE_VOLUME`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_weighting_t, cell_weighting)
+
+/// Stop when the relative energy decrease of an iteration is below this; default 1e-4.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(convergence_threshold_t, convergence_threshold)
+/// A `Local_solver`; default `Local_solver::GRADIENT_DESCENT`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(local_solver_t, local_solver)
+/// A `Vertex_order`; default `Vertex_order::GREEDY`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 

@@ -52,6 +52,21 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
   if(J.allFinite()) {
     if constexpr(Has_value_without_svd<Measure, n>::value) {
       value = measure.template value_without_svd<n>(J, &dJ);
+    } else if constexpr(n == 2) {
+      // J = S + A with S = [E -H; H E] a similarity and A = [F G; G -F] an anti-similarity:
+      // sigma = (Q + R, Q - R) with Q = |(E, H)|, R = |(F, G)|, dQ/dJ = S / 2Q, dR/dJ = A / 2R,
+      // so dD/dJ = (g1 + g2) S / 2Q + (g1 - g2) A / 2R needs no angle.
+      const double E = 0.5 * (J(0, 0) + J(1, 1)), F = 0.5 * (J(0, 0) - J(1, 1));
+      const double G = 0.5 * (J(1, 0) + J(0, 1)), H = 0.5 * (J(1, 0) - J(0, 1));
+      const double Q = std::hypot(E, H), R = std::hypot(F, G), s1 = Q + R;
+      const Vector<2> sigma(s1, s1 > 0 ? (J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0)) / s1 : 0.);
+      value = measure.template value<2>(sigma);
+      if(value < std::numeric_limits<double>::infinity()) {
+        const Vector<2> g = measure.template gradient<2>(sigma);
+        const double a = Q > 0 ? (g[0] + g[1]) / (2 * Q) : 0., b = R > 0 ? (g[0] - g[1]) / (2 * R) : 0.;
+        dJ << a * E + b * F, -a * H + b * G,
+              a * H + b * G,  a * E - b * F;
+      }
     } else {
       Signed_svd<n> svd;
       signed_svd(J, svd);

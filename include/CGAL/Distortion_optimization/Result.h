@@ -1,0 +1,32 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_RESULT_H
+#define CGAL_DISTORTION_OPTIMIZATION_RESULT_H
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationRef
+/// What `CGAL::minimize_distortion()` returns. Energies are weighted means
+/// sum_c w(c) D(J_c) / sum_c w(c) with the run's cell weights w(c) (Algorithm 1, step 2); with the
+/// default uniform vertex weights and average-volume weighting this is the volume-weighted mean.
+struct Result
+{
+  double initial_energy = 0;                 ///< energy of the start map
+  double final_energy = 0;                   ///< energy of the returned map
+  std::vector<double> energy_per_iteration;  ///< energy after each iteration (sweep)
+  std::size_t iterations = 0;                ///< iterations (sweeps over the free vertices) done
+  double seconds = 0;                        ///< wall-clock time of the optimization
+  std::size_t inverted_cells = 0;            ///< inverted or flat cells of the returned map (exact predicate)
+  bool converged = false;                    ///< the relative energy decrease fell below the threshold
+  bool stopped_by_visitor = false;           ///< the visitor returned false
+};
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_RESULT_H

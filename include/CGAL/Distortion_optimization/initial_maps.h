@@ -1,0 +1,86 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Start maps for surface parametrization, from CGAL's Surface_mesh_parameterization package, so
+// that "parameterize, then improve" is two calls:
+//   CGAL::Distortion_optimization::tutte_parameterization(mesh, uv);
+//   CGAL::minimize_distortion(mesh, uv, CGAL::Distortion_optimization::Symmetric_dirichlet());
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H
+#define CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The convex shape the border of a disk is mapped to (with arc-length spacing).
+enum class Border_shape { CIRCLE, SQUARE };
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The kind of start map computed by `initial_parameterization()`.
+enum class Initial_map
+{
+  TUTTE,            ///< barycentric (uniform weights) mapping: injective for a convex border (Tutte)
+  DISCRETE_CONFORMAL ///< cotangent weights (discrete conformal map): smoother, may flip triangles
+};
+
+namespace internal {
+
+template <class TriangleMesh, class UVMap, class Parameterizer>
+void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& parameterizer)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  if(num_faces(tm) == 0)
+    throw Invalid_input("the mesh has no face");
+  const auto border = CGAL::Polygon_mesh_processing::longest_border(tm).first;
+  if(border == boost::graph_traits<TriangleMesh>::null_halfedge())
+    throw Invalid_input("the mesh has no border: a disk (genus 0, one border) is needed to parameterize it");
+  // CGAL's parameterizers take a non-const mesh but do not modify it.
+  const SMP::Error_code status = SMP::parameterize(const_cast<TriangleMesh&>(tm), parameterizer, border, uv);
+  if(status != SMP::OK)
+    throw Invalid_input(std::string("the parameterization failed: ") + SMP::get_error_message(status));
+}
+
+} // namespace internal
+
+/// \ingroup PkgDistortionOptimizationRef
+/// Writes into `uv` (a vertex property map to `Point_2`) a fixed-border parameterization of the
+/// disk `tm` (a `FaceListGraph` of triangles with one border): the longest border is mapped to a
+/// circle or a square by arc length, the inner vertices by `kind`.
+/// \throws Invalid_input if `tm` is empty, has no border, or CGAL's parameterizer fails (e.g. the
+/// mesh is not a topological disk).
+template <class TriangleMesh, class UVMap>
+void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind = Initial_map::TUTTE,
+                              Border_shape border = Border_shape::CIRCLE)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  using Circle = SMP::Circular_border_arc_length_parameterizer_3<TriangleMesh>;
+  using Square = SMP::Square_border_arc_length_parameterizer_3<TriangleMesh>;
+  auto run = [&](auto border_parameterizer) {
+    using Border = decltype(border_parameterizer);
+    if(kind == Initial_map::TUTTE)
+      internal::run_parameterizer(tm, uv, SMP::Barycentric_mapping_parameterizer_3<TriangleMesh, Border>());
+    else
+      internal::run_parameterizer(tm, uv, SMP::Discrete_conformal_map_parameterizer_3<TriangleMesh, Border>());
+  };
+  if(border == Border_shape::CIRCLE) run(Circle());
+  else run(Square());
+}
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H

@@ -1,0 +1,83 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Algorithm 1: greedy sweeps (Algorithm 2) until the relative energy decrease of a sweep is below
+// the threshold or the number of iterations is reached.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H
+
+#include <CGAL/Distortion_optimization/Result.h>
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/greedy_sweep.h>
+#include <CGAL/Distortion_optimization/internal/local_step.h>
+#include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+struct Options
+{
+  std::size_t iterations = 100;
+  double threshold = 1e-4;
+  Local_solver solver = Local_solver::GRADIENT_DESCENT;
+  Vertex_order order = Vertex_order::GREEDY;
+  std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
+};
+
+// Minimizes in place the target positions of problem.map; throws Invalid_input for a start the
+// measure cannot be evaluated on.
+template <int n, class Measure>
+Result minimize(Optimization_problem<n>& problem, const Measure& measure, const Options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Local_step<n, Measure> step(problem, measure, options.solver);
+  for(std::size_t c = 0; c < step.cell_value.size(); ++c) {
+    if(std::isnan(step.cell_value[c]))
+      throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number");
+    if(!std::isfinite(step.cell_value[c]))
+      throw Invalid_input("cell " + std::to_string(c) + " of the start map is inverted or degenerate, and the "
+                          "measure '" + measure.name() + "' is infinite there: untangle the map first");
+  }
+
+  Result result;
+  const double normalization = problem.total_weight > 0 ? 1. / problem.total_weight : 0.;
+  double energy = step.energy() * normalization;
+  result.initial_energy = energy;
+  while(result.iterations < options.iterations) {
+    greedy_sweep(step, options.order);
+    ++result.iterations;
+    const double previous = energy;
+    // Every accepted move decreases the exact energy; a recomputed sum can still exceed the last
+    // one by its own rounding when a sweep gains less than that: keep the smaller.
+    energy = std::min(previous, step.energy() * normalization);
+    result.energy_per_iteration.push_back(energy);
+    if(options.visitor && !options.visitor(result.iterations, energy)) {
+      result.stopped_by_visitor = true;
+      break;
+    }
+    if(!(previous - energy > options.threshold * std::abs(previous))) {
+      result.converged = true;
+      break;
+    }
+  }
+  result.final_energy = energy;
+  for(std::size_t c = 0; c < step.cell_ok.size(); ++c)
+    if(!step.cell_ok[c]) ++result.inverted_cells;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H

@@ -1,0 +1,78 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Everything Algorithm 1 needs, built once from a Simplicial_map: vertex weights omega(v), the
+// cell weights w(c) = sum_{v in c} omega(v) w(c, v) (step 2), which vertices are free, and each
+// vertex's ring of incident cells stored contiguously (vertex -> cells, CSR).
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZATION_PROBLEM_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZATION_PROBLEM_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/simplicial_map.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+struct Incidence
+{
+  std::uint32_t cell;
+  std::uint32_t local;   // position of the vertex in the cell, 0..n
+};
+
+template <int n>
+struct Optimization_problem
+{
+  Simplicial_map<n> map;
+  std::vector<double> omega;               // vertex weights, 1 by default
+  std::vector<unsigned char> is_free;      // 0 for constrained vertices
+  std::vector<double> incidence_weight;    // w(c, v), equal for all vertices of c (eq. 23)
+  std::vector<double> cell_weight;         // w(c)
+  double total_weight = 0;                 // sum_c w(c)
+  std::vector<std::uint32_t> ring_begin;   // ring of v: ring[ring_begin[v] .. ring_begin[v+1])
+  std::vector<Incidence> ring;
+
+  std::size_t number_of_vertices() const { return map.number_of_vertices(); }
+
+  // Call once map, omega (may be empty) and is_free are set.
+  void finalize(Cell_weighting weighting)
+  {
+    const std::size_t nv = map.number_of_vertices(), nc = map.number_of_cells();
+    if(omega.empty()) omega.assign(nv, 1.);
+    if(omega.size() != nv || is_free.size() != nv)
+      throw Invalid_input("vertex weights or constraints do not match the number of vertices");
+    incidence_weight.resize(nc);
+    cell_weight.resize(nc);
+    total_weight = 0;
+    for(std::size_t c = 0; c < nc; ++c) {
+      const double v = map.rest_volume[c];
+      incidence_weight[c] = weighting == Cell_weighting::UNIFORM ? 1.
+                          : weighting == Cell_weighting::VOLUME ? v : v / (n + 1);
+      double omega_sum = 0;
+      for(auto i : map.cells[c]) omega_sum += omega[i];
+      cell_weight[c] = omega_sum * incidence_weight[c];
+      total_weight += cell_weight[c];
+    }
+    ring_begin.assign(nv + 1, 0);
+    for(const auto& cell : map.cells)
+      for(auto i : cell) ++ring_begin[i + 1];
+    for(std::size_t v = 0; v < nv; ++v) ring_begin[v + 1] += ring_begin[v];
+    ring.resize(ring_begin[nv]);
+    std::vector<std::uint32_t> fill(ring_begin.begin(), ring_begin.end() - 1);
+    for(std::size_t c = 0; c < nc; ++c)
+      for(int i = 0; i <= n; ++i)
+        ring[fill[map.cells[c][i]]++] = Incidence{static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i)};
+  }
+};
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZATION_PROBLEM_H

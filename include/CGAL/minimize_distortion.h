@@ -1,0 +1,134 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_MINIMIZE_DISTORTION_H
+#define CGAL_MINIMIZE_DISTORTION_H
+
+#include <CGAL/Distortion_optimization/Result.h>
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/minimize.h>
+#include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <type_traits>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// The options every minimize_distortion() overload shares, read from a named-parameter pack.
+template <class NamedParameters>
+Options read_options(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Options o;
+  o.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), o.iterations);
+  o.threshold = choose_parameter(get_parameter(np, internal_np::convergence_threshold), o.threshold);
+  o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
+  o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
+  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
+  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
+    o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };
+  if(!(o.threshold >= 0))
+    throw Invalid_input("the convergence threshold must be a non-negative number");
+  return o;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Minimizes the distortion of the simplicial map that sends each vertex `v` of the triangle mesh
+`tm` from its source position to `get(target, v)`, moving the free vertices' targets:
+a planar deformation (`Point_2` source) or a surface parametrization (`Point_3` source).
+
+The method is Algorithm 1 of Naitsat, Saucan and Zeevi, "Geometry-based distortion measures for
+space deformation": sweeps over the free vertices, the most distorted first (Algorithm 2), each
+one moved along the exact gradient of its ring's energy by a line search that never leaves the
+kernel of the ring. No triangle that is positively oriented in the start map is ever flipped or
+flattened (checked with exact predicates); the energy never increases.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam TargetMap a model of `ReadWritePropertyMap` from vertex descriptors to a `Point_2`
+\tparam Measure a model of `DistortionMeasure`, e.g. `Distortion_optimization::Symmetric_dirichlet`
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the source mesh (not modified)
+\param target the start map on input, the optimized map on output; written only on success, and
+       only for free vertices
+\param measure the distortion measure D
+\param np optional named parameters among:
+  - `CGAL::parameters::vertex_point_map`: source positions, `Point_2` or `Point_3`; default
+    `get(CGAL::vertex_point, tm)`
+  - `CGAL::parameters::vertex_is_constrained_map`: a readable vertex property map to `bool`;
+    constrained vertices keep their target. Default: the border vertices.
+  - `Distortion_optimization::parameters::vertex_weight_map`: omega(v) > 0; default 1
+  - `Distortion_optimization::parameters::cell_weighting`: a `Distortion_optimization::Cell_weighting`;
+    default `AVERAGE_VOLUME`
+  - `CGAL::parameters::number_of_iterations`: the largest number of sweeps; default 100
+  - `Distortion_optimization::parameters::convergence_threshold`: stop when a sweep decreases
+    the energy by less than this fraction; default 1e-4
+  - `Distortion_optimization::parameters::local_solver`: `GRADIENT_DESCENT` (default) or `BFGS`
+  - `Distortion_optimization::parameters::vertex_order`: `GREEDY` (default, the paper's) or
+    `SORTED_PER_SWEEP`
+  - `CGAL::parameters::visitor`: a callable `bool(std::size_t iteration, double energy)` called
+    after each sweep; returning `false` stops the run with the map of that sweep
+
+\returns a `Distortion_optimization::Result`
+
+\throws Distortion_optimization::Invalid_input for the input `compute_distortion()` rejects,
+non-positive vertex weights, and, when the measure is infinite on inverted cells (normalized), a
+start map with an inverted or flat triangle (the message names it).
+*/
+template <class TriangleMesh, class TargetMap, class Measure,
+          class NamedParameters = parameters::Default_named_parameters>
+Distortion_optimization::Result
+minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& measure,
+                    const NamedParameters& np = parameters::default_values())
+{
+  namespace DO = Distortion_optimization;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  const DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
+
+  DO::internal::Optimization_problem<2> problem;
+  problem.map = adapter.map;
+  auto weights = get_parameter(np, DO::internal_np::vertex_weight_map);
+  if constexpr(!std::is_same<decltype(weights), internal_np::Param_not_found>::value)
+    problem.omega = adapter.vertex_weights(weights);
+  auto constrained = get_parameter(np, internal_np::vertex_is_constrained);
+  problem.is_free.resize(adapter.vertex_of.size());
+  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i) {
+    bool fixed;
+    if constexpr(std::is_same<decltype(constrained), internal_np::Param_not_found>::value)
+      fixed = static_cast<bool>(CGAL::is_border(adapter.vertex_of[i], tm));
+    else
+      fixed = get(constrained, adapter.vertex_of[i]);
+    problem.is_free[i] = !fixed;
+  }
+  problem.finalize(choose_parameter(get_parameter(np, DO::internal_np::cell_weighting),
+                                    DO::Cell_weighting::AVERAGE_VOLUME));
+
+  const DO::Result result = DO::internal::minimize(problem, measure, DO::internal::read_options(np));
+
+  using Point_2 = typename boost::property_traits<TargetMap>::value_type;
+  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i)
+    if(problem.is_free[i])
+      put(target, adapter.vertex_of[i], Point_2(problem.map.target[i][0], problem.map.target[i][1]));
+  return result;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_MINIMIZE_DISTORTION_H

@@ -1,0 +1,235 @@
+// minimize_distortion on CGAL::Surface_mesh: known minimizers, monotone energy, no flips,
+// constraints, and real parametrizations from libcgal-demo.
+
+#include "test_meshes.h"
+
+#include <CGAL/Distortion_optimization/initial_maps.h>
+#include <CGAL/compute_distortion.h>
+#include <CGAL/minimize_distortion.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <random>
+
+using namespace test_meshes;
+
+namespace {
+
+using Map = std::function<Point_2(const Point_2&)>;
+
+// A 16 x 16 grid (512 triangles): border mapped by f, interior by f plus noise.
+struct Noisy_map
+{
+  Mesh2 mesh = planar_grid(16);
+  Mesh2::Property_map<Mesh2::Vertex_index, Point_2> uv;
+  Mesh2::Property_map<Mesh2::Vertex_index, Point_2> exact;
+
+  Noisy_map(const Map& f, double noise, unsigned seed = 1)
+  {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-noise, noise);
+    uv = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:uv").first;
+    exact = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:exact").first;
+    for(auto v : mesh.vertices()) {
+      const Point_2 p = mesh.point(v);
+      exact[v] = f(p);
+      uv[v] = mesh.is_border(v) ? f(p) : f(Point_2(p.x() + u(rng), p.y() + u(rng)));
+    }
+  }
+
+  double max_error() const
+  {
+    double e = 0;
+    for(auto v : mesh.vertices()) e = std::max(e, std::sqrt(CGAL::squared_distance(uv[v], exact[v])));
+    return e;
+  }
+  double diameter() const
+  {
+    double d = 0;
+    for(auto a : mesh.vertices())
+      for(auto b : mesh.vertices()) d = std::max(d, std::sqrt(CGAL::squared_distance(exact[a], exact[b])));
+    return d;
+  }
+};
+
+const Map rigid = [](const Point_2& p) {
+  const double c = std::cos(0.6), s = std::sin(0.6);
+  return Point_2(c * p.x() - s * p.y() + 3, s * p.x() + c * p.y() - 1);
+};
+const Map similarity = [](const Point_2& p) {
+  const double c = 2.5 * std::cos(-1.1), s = 2.5 * std::sin(-1.1);
+  return Point_2(c * p.x() - s * p.y() + 1, s * p.x() + c * p.y() + 2);
+};
+const Map affine = [](const Point_2& p) { return Point_2(2 * p.x() + 0.7 * p.y() + 1, -0.4 * p.x() + 0.8 * p.y()); };
+
+template <class Measure>
+void expect_recovers(const Map& f, const Measure& measure, DO::Local_solver solver = DO::Local_solver::GRADIENT_DESCENT)
+{
+  Noisy_map m(f, 0.02);
+  ASSERT_GT(m.max_error(), 1e-3);
+  std::vector<double> energies;
+  auto visitor = [&](std::size_t, double e) { energies.push_back(e); return true; };
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, measure,
+    DO::parameters::convergence_threshold(0., DO::parameters::local_solver(solver))
+      .number_of_iterations(4000).visitor(visitor));
+  EXPECT_LE(m.max_error(), 1e-5 * m.diameter()) << measure.name() << " after " << r.iterations << " sweeps";
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_EQ(count_flipped(m.mesh, m.uv), 0u);
+  for(std::size_t i = 1; i < energies.size(); ++i) ASSERT_LE(energies[i], energies[i - 1]) << measure.name();
+}
+
+std::string data(const std::string& name) { return std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/" + name; }
+
+} // namespace
+
+TEST(MinimizeDistortion, IsometricMeasuresRecoverARigidMap)
+{
+  expect_recovers(rigid, DO::Isometric_dilatation());
+  expect_recovers(rigid, DO::ARAP());
+  expect_recovers(rigid, DO::Symmetric_dirichlet());
+}
+
+// V = max(det, 1/det) is minimized by every area-preserving map, and its kinks at det = 1 stop
+// one-vertex-at-a-time descent at points that are optimal for each vertex alone: the energy
+// decreases, nothing flips, but the rigid map is not reached (a known limit of local sweeps).
+TEST(MinimizeDistortion, VolumeDistortionDecreasesWithoutFlips)
+{
+  Noisy_map m(rigid, 0.02);
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::Volume_distortion(),
+                                           DO::parameters::convergence_threshold(0.).number_of_iterations(200));
+  EXPECT_LT(r.final_energy - 1, 0.5 * (r.initial_energy - 1));
+  EXPECT_EQ(count_flipped(m.mesh, m.uv), 0u);
+  EXPECT_NEAR(r.final_energy, brute_force_energy(m.mesh, m.uv, "volume"), 1e-9);
+}
+
+TEST(MinimizeDistortion, ConformalMeasuresRecoverASimilarity)
+{
+  expect_recovers(similarity, DO::Conformal_dilatation());
+  expect_recovers(similarity, DO::Condition_number());
+  expect_recovers(similarity, DO::MIPS());
+}
+
+TEST(MinimizeDistortion, PolyconvexMeasuresRecoverAnAffineMap)
+{
+  expect_recovers(affine, DO::MIPS());
+  expect_recovers(affine, DO::Dirichlet());
+}
+
+TEST(MinimizeDistortion, BfgsLocalSolverRecoversTheMinimizerToo)
+{
+  expect_recovers(rigid, DO::Symmetric_dirichlet(), DO::Local_solver::BFGS);
+  expect_recovers(similarity, DO::MIPS(), DO::Local_solver::BFGS);
+}
+
+TEST(MinimizeDistortion, EnergyDecreasesWithoutFlipsFromAHardStart)
+{
+  // Large noise: many triangles nearly flat, none inverted.
+  Noisy_map m(rigid, 0.022, 5);
+  ASSERT_EQ(count_flipped(m.mesh, m.uv), 0u);
+  const double before = brute_force_energy(m.mesh, m.uv, "symmetric_dirichlet");
+  std::vector<double> energies;
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::Symmetric_dirichlet(),
+    CGAL::parameters::number_of_iterations(30).visitor([&](std::size_t, double e) { energies.push_back(e); return true; }));
+  EXPECT_NEAR(r.initial_energy, before, 1e-9 * before);
+  for(std::size_t i = 1; i < energies.size(); ++i) EXPECT_LE(energies[i], energies[i - 1]);
+  EXPECT_LT(r.final_energy - 1, 0.01 * (r.initial_energy - 1));   // symmetric Dirichlet is >= 1
+  EXPECT_EQ(count_flipped(m.mesh, m.uv), 0u);
+  // The reported energy is the independently recomputed area-weighted mean.
+  EXPECT_NEAR(r.final_energy, brute_force_energy(m.mesh, m.uv, "symmetric_dirichlet"), 1e-9 * r.final_energy);
+}
+
+TEST(MinimizeDistortion, ConstrainedVerticesAreUnchangedBitForBit)
+{
+  Noisy_map m(affine, 0.02);
+  auto fixed = m.mesh.add_property_map<Mesh2::Vertex_index, bool>("v:fixed", false).first;
+  std::vector<std::pair<Mesh2::Vertex_index, Point_2>> kept;
+  int i = 0;
+  for(auto v : m.mesh.vertices())
+    if(m.mesh.is_border(v) || (i++ % 7 == 0)) {
+      fixed[v] = true;
+      kept.emplace_back(v, m.uv[v]);
+    }
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::Conformal_dilatation(),
+                                           CGAL::parameters::vertex_is_constrained_map(fixed));
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  for(const auto& kv : kept) {
+    EXPECT_EQ(m.uv[kv.first].x(), kv.second.x());
+    EXPECT_EQ(m.uv[kv.first].y(), kv.second.y());
+  }
+}
+
+TEST(MinimizeDistortion, VisitorStopsTheRunAtAConsistentMap)
+{
+  Noisy_map m(rigid, 0.02);
+  double last = 0;
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::ARAP(),
+    CGAL::parameters::visitor([&](std::size_t it, double e) { last = e; return it < 3; }));
+  EXPECT_TRUE(r.stopped_by_visitor);
+  EXPECT_EQ(r.iterations, 3u);
+  EXPECT_EQ(r.final_energy, last);
+  EXPECT_NEAR(brute_force_energy(m.mesh, m.uv, "arap"), last, 1e-9 * last);
+}
+
+TEST(MinimizeDistortion, GreedyAndSortedOrdersBothConverge)
+{
+  for(auto order : {DO::Vertex_order::GREEDY, DO::Vertex_order::SORTED_PER_SWEEP}) {
+    Noisy_map m(similarity, 0.02);
+    const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::MIPS(), DO::parameters::vertex_order(order));
+    EXPECT_TRUE(r.converged);
+    EXPECT_LT(r.final_energy - 2., 1e-3 * (r.initial_energy - 2.));
+  }
+}
+
+TEST(MinimizeDistortion, InvertedStartIsRejectedForANormalizedMeasure)
+{
+  Noisy_map m(rigid, 0.);
+  Mesh2::Vertex_index v(5 * 17 + 5);
+  m.uv[v] = Point_2(m.uv[v].x() + 0.2, m.uv[v].y() + 0.2);
+  ASSERT_GT(count_flipped(m.mesh, m.uv), 0u);
+  const Point_2 before = m.uv[v];
+  try {
+    CGAL::minimize_distortion(m.mesh, m.uv, DO::Symmetric_dirichlet());
+    ADD_FAILURE() << "an inverted start was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("cell"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(m.uv[v], before);   // nothing written
+  // ARAP is finite there: the run goes on, and flips nothing that was not flipped.
+  const std::size_t flipped = count_flipped(m.mesh, m.uv);
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::ARAP());
+  EXPECT_LE(r.inverted_cells, flipped);
+  EXPECT_LE(count_flipped(m.mesh, m.uv), flipped);
+}
+
+TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
+{
+  for(const char* name : {"nefertiti.off", "mushroom.off"}) {
+    Mesh3 mesh;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data(name), mesh)) << "missing " << data(name)
+      << " (installed by scripts/install_dependencies.sh from libcgal-demo)";
+    auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+    DO::initial_parameterization(mesh, uv);
+    ASSERT_EQ(count_flipped(mesh, uv), 0u) << name;
+    auto tutte = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:tutte").first;
+    for(auto v : mesh.vertices()) tutte[v] = uv[v];
+
+    auto run = [&](const auto& measure, const std::string& label) {
+      for(auto v : mesh.vertices()) uv[v] = tutte[v];
+      const double start = brute_force_energy(mesh, uv, label);
+      const auto r = CGAL::minimize_distortion(mesh, uv, measure, CGAL::parameters::number_of_iterations(20));
+      EXPECT_NEAR(r.initial_energy, start, 1e-9 * start) << name << " " << label;
+      EXPECT_LT(brute_force_energy(mesh, uv, label), start) << name << " " << label;
+      EXPECT_EQ(r.inverted_cells, 0u) << name << " " << label;
+      EXPECT_EQ(count_flipped(mesh, uv), 0u) << name << " " << label;
+    };
+    run(DO::Conformal_dilatation(), "conformal");
+    run(DO::Isometric_dilatation(), "isometric");
+    run(DO::Symmetric_dirichlet(), "symmetric_dirichlet");
+    run(DO::Product<DO::Conformal_dilatation, DO::Isometric_dilatation>(), "conformal*isometric");
+  }
+}
