@@ -1,0 +1,263 @@
+// distortion_optimizer: the command-line tool of the package.
+//
+//   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
+//                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
+//
+// S, T, O: OFF or OBJ triangle meshes with the same vertices and faces in the same order; a planar
+// target has z = 0. Without --target, a disk-topology source gets a Tutte start (circle border).
+// Energies are volume-weighted means sum vol(c) D(J_c) / sum vol(c).
+// Exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command line.
+
+#include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+#include <CGAL/Distortion_optimization/initial_maps.h>
+#include <CGAL/Distortion_optimization/measure_by_name.h>
+#include <CGAL/minimize_distortion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace DO = CGAL::Distortion_optimization;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using Vertex = Mesh::Vertex_index;
+
+namespace {
+
+const char* usage =
+  "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
+  "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
+  "         [--threads N] [--report R.json]\n"
+  "  S, T, O      OFF or OBJ triangle meshes, same vertices and faces in the same order;\n"
+  "               a planar target has z = 0; without --target a disk source gets a Tutte start\n"
+  "  NAME         conformal (default), condition, mips, isometric, arap, symmetric_dirichlet,\n"
+  "               volume, dirichlet, or a product such as conformal*isometric\n"
+  "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
+  "               one 0-based vertex index per line\n"
+  "  --iterations largest number of sweeps (default 100)\n"
+  "  --threshold  stop when a sweep lowers the energy by less than this fraction (default 1e-4)\n"
+  "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
+  "  --threads    number of threads (default 1; the optimizer runs on one thread for now)\n"
+  "  --report     also write the results as JSON\n";
+
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Command_line
+{
+  std::string source, target, output, measure = "conformal", fix = "boundary", solver = "gd", report;
+  std::size_t iterations = 100, threads = 1;
+  double threshold = 1e-4;
+};
+
+template <class T>
+T parse_number(const std::string& option, const std::string& text)
+{
+  std::istringstream in(text);
+  T value;
+  if(!(in >> value) || !in.eof()) throw Usage_error(option + " expects a number, not '" + text + "'");
+  return value;
+}
+
+Command_line parse(int argc, char** argv)
+{
+  Command_line c;
+  std::map<std::string, std::string> seen;
+  for(int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    if(option == "--help" || option == "-h") throw Usage_error("");
+    if(i + 1 >= argc) throw Usage_error(option + " needs a value");
+    const std::string value = argv[++i];
+    if(seen.count(option)) throw Usage_error(option + " is given twice");
+    seen[option] = value;
+    if(option == "--source") c.source = value;
+    else if(option == "--target") c.target = value;
+    else if(option == "--output") c.output = value;
+    else if(option == "--measure") c.measure = value;
+    else if(option == "--fix") c.fix = value;
+    else if(option == "--solver") c.solver = value;
+    else if(option == "--report") c.report = value;
+    else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
+    else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
+    else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
+    else throw Usage_error("unknown option " + option);
+  }
+  if(c.source.empty()) throw Usage_error("--source is required");
+  if(c.output.empty()) throw Usage_error("--output is required");
+  if(c.solver != "gd" && c.solver != "bfgs") throw Usage_error("--solver is gd or bfgs, not '" + c.solver + "'");
+  if(c.threads == 0) throw Usage_error("--threads must be at least 1");
+  if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
+  for(const std::string& path : {c.output}) {
+    const std::string e = DO::IO::internal::extension(path);
+    if(e != "off" && e != "obj") throw Usage_error("--output must end in .off or .obj");
+  }
+  return c;
+}
+
+// The source as a Surface_mesh, vertex i and face f in file order; rejects what a surface mesh
+// cannot represent (non-manifold edges or vertices, inconsistent orientation, unused vertices).
+Mesh to_mesh(const DO::IO::Triangle_soup& soup, const std::string& name)
+{
+  Mesh mesh;
+  for(const auto& p : soup.points) mesh.add_vertex(K::Point_3(p[0], p[1], p[2]));
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const auto& t = soup.triangles[f];
+    if(mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2])) == Mesh::null_face())
+      throw DO::Invalid_input(name + ": face " + std::to_string(f) +
+                              " makes the mesh non-manifold or inconsistently oriented");
+  }
+  for(Vertex v : mesh.vertices())
+    if(mesh.is_isolated(v)) throw DO::Invalid_input(name + ": vertex " + std::to_string(std::size_t(v)) + " is in no face");
+  std::vector<Mesh::Halfedge_index> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(mesh, std::back_inserter(pinched));
+  if(!pinched.empty())
+    throw DO::Invalid_input(name + ": vertex " + std::to_string(std::size_t(mesh.target(pinched.front()))) + " is non-manifold");
+  return mesh;
+}
+
+bool is_disk(const Mesh& mesh)
+{
+  std::vector<Mesh::Halfedge_index> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  const long long euler = static_cast<long long>(mesh.number_of_vertices()) - static_cast<long long>(mesh.number_of_edges()) +
+                          static_cast<long long>(mesh.number_of_faces());
+  return cycles.size() == 1 && euler == 1;
+}
+
+std::vector<unsigned char> read_fixed_vertices(const std::string& path, std::size_t count)
+{
+  std::ifstream in(path);
+  if(!in) throw DO::Invalid_input(path + ": cannot open the file of fixed vertices");
+  std::vector<unsigned char> fixed(count, 0);
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos) line.erase(hash);
+    std::istringstream words(line);
+    long long index;
+    if(!(words >> index)) {
+      if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      throw DO::Invalid_input(path + ":" + std::to_string(number) + ": not a vertex index");
+    }
+    std::string rest;
+    if(words >> rest) throw DO::Invalid_input(path + ":" + std::to_string(number) + ": one vertex index per line");
+    if(index < 0 || static_cast<std::size_t>(index) >= count)
+      throw DO::Invalid_input(path + ":" + std::to_string(number) + ": vertex index " + std::to_string(index) +
+                              " out of range (the mesh has " + std::to_string(count) + " vertices)");
+    fixed[static_cast<std::size_t>(index)] = 1;
+  }
+  return fixed;
+}
+
+std::string json_number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+int run(const Command_line& c)
+{
+  const DO::IO::Triangle_soup source = DO::IO::read_triangle_soup(c.source);
+  Mesh mesh = to_mesh(source, c.source);
+  bool planar = true;
+  for(const auto& p : source.points) planar = planar && p[2] == 0;
+
+  auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
+  if(!c.target.empty()) {
+    const DO::IO::Triangle_soup target = DO::IO::read_triangle_soup(c.target);
+    if(target.points.size() != source.points.size() || target.triangles.size() != source.triangles.size())
+      throw DO::Invalid_input(c.target + ": " + std::to_string(target.points.size()) + " vertices and " +
+                              std::to_string(target.triangles.size()) + " faces, the source has " +
+                              std::to_string(source.points.size()) + " and " + std::to_string(source.triangles.size()));
+    for(std::size_t f = 0; f < source.triangles.size(); ++f)
+      if(target.triangles[f] != source.triangles[f])
+        throw DO::Invalid_input(c.target + ": face " + std::to_string(f) + " differs from the source's (same connectivity needed)");
+    for(std::size_t i = 0; i < target.points.size(); ++i) {
+      if(target.points[i][2] != 0)
+        throw DO::Invalid_input(c.target + ": vertex " + std::to_string(i) + " has z != 0 (the target must be planar)");
+      uv[Vertex(i)] = K::Point_2(target.points[i][0], target.points[i][1]);
+    }
+  } else {
+    if(!is_disk(mesh))
+      throw DO::Invalid_input(c.source + ": without --target the source must be a topological disk (one border, no handle)");
+    DO::initial_parameterization(mesh, uv);
+  }
+
+  auto fixed = mesh.add_property_map<Vertex, bool>("v:fixed", false).first;
+  if(c.fix == "boundary") {
+    for(Vertex v : mesh.vertices()) fixed[v] = mesh.is_border(v);
+  } else if(c.fix != "none") {
+    const auto list = read_fixed_vertices(c.fix, mesh.number_of_vertices());
+    for(Vertex v : mesh.vertices()) fixed[v] = list[std::size_t(v)] != 0;
+  }
+
+  auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
+  for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
+
+  const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
+  std::string measure_name;
+  const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
+    measure_name = measure.name();
+    auto np = DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold))
+                .number_of_iterations(c.iterations)
+                .vertex_is_constrained_map(fixed);
+    // A planar source is compared in its own plane (so its orientation counts), a surface in
+    // each triangle's frame.
+    return planar ? CGAL::minimize_distortion(mesh, uv, measure, np.vertex_point_map(source_2))
+                  : CGAL::minimize_distortion(mesh, uv, measure, np);
+  });
+
+  DO::IO::Triangle_soup output;
+  output.triangles = source.triangles;
+  for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
+  DO::IO::write_triangle_soup(c.output, output);
+
+  std::ostringstream json;
+  json << "{\n  \"cells\": " << mesh.number_of_faces() << ",\n  \"vertices\": " << mesh.number_of_vertices()
+       << ",\n  \"measure\": \"" << measure_name << "\",\n  \"initial_energy\": " << json_number(r.initial_energy)
+       << ",\n  \"final_energy\": " << json_number(r.final_energy) << ",\n  \"sweeps\": " << r.iterations
+       << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"inverted_cells\": " << r.inverted_cells
+       << ",\n  \"converged\": " << (r.converged ? "true" : "false") << ",\n  \"energy_per_sweep\": [";
+  for(std::size_t i = 0; i < r.energy_per_iteration.size(); ++i)
+    json << (i ? ", " : "") << json_number(r.energy_per_iteration[i]);
+  json << "]\n}\n";
+  if(!c.report.empty())
+    DO::IO::write_file_atomically(c.report, [&](std::ostream& out) { out << json.str(); });
+
+  std::printf("cells           %zu\nvertices        %zu\nmeasure         %s\ninitial_energy  %.12g\n"
+              "final_energy    %.12g\nsweeps          %zu\nseconds         %.3f\ninverted_cells  %zu\n",
+              std::size_t(mesh.number_of_faces()), std::size_t(mesh.number_of_vertices()), measure_name.c_str(),
+              r.initial_energy, r.final_energy, r.iterations, r.seconds, r.inverted_cells);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try {
+    return run(parse(argc, argv));
+  } catch(const Usage_error& e) {
+    if(!*e.what()) {   // --help
+      std::cout << usage;
+      return 0;
+    }
+    std::cerr << "distortion_optimizer: " << e.what() << "\n" << usage;
+    return 2;
+  } catch(const std::exception& e) {
+    std::cerr << "distortion_optimizer: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,196 @@
+// The command-line tool, run as a user would: its documented options, outputs and errors.
+
+#include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace IO = CGAL::Distortion_optimization::IO;
+
+namespace {
+
+struct Tool_run
+{
+  int status;
+  std::string output;
+};
+
+Tool_run run(const std::string& arguments)
+{
+  const std::string command = std::string(DISTORTION_OPTIMIZER) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buffer[4096];
+  while(std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string temp(const std::string& name)
+{
+  return ::testing::TempDir() + "distortion_cli_" + name;
+}
+
+bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
+double json_value(const std::string& json, const std::string& key)
+{
+  std::smatch m;
+  if(!std::regex_search(json, m, std::regex("\"" + key + "\": ([-0-9.eE+]+)"))) return NAN;
+  return std::stod(m[1]);
+}
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A planar 12 x 12 grid (source) and the same grid with a noisy interior (target).
+void write_planar_pair(const std::string& source, const std::string& target, double noise = 0.02)
+{
+  const int k = 12;
+  IO::Triangle_soup s, t;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-noise, noise);
+  for(int j = 0; j <= k; ++j)
+    for(int i = 0; i <= k; ++i) {
+      const double x = double(i) / k, y = double(j) / k;
+      const bool border = i == 0 || j == 0 || i == k || j == k;
+      s.points.push_back({x, y, 0});
+      t.points.push_back({2 * x + (border ? 0 : u(rng)), y + (border ? 0 : u(rng)), 0});
+    }
+  for(int j = 0; j < k; ++j)
+    for(int i = 0; i < k; ++i) {
+      const std::size_t a = j * (k + 1) + i, b = a + 1, c = a + k + 1, d = c + 1;
+      s.triangles.push_back({a, b, d});
+      s.triangles.push_back({a, d, c});
+    }
+  t.triangles = s.triangles;
+  IO::write_triangle_soup(source, s);
+  IO::write_triangle_soup(target, t);
+}
+
+std::string data(const std::string& name) { return std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/" + name; }
+
+} // namespace
+
+TEST(CommandLine, OptimizesAPlanarPairAndReportsJson)
+{
+  const std::string s = temp("s.off"), t = temp("t.obj"), o = temp("o.obj"), r = temp("r.json");
+  write_planar_pair(s, t);
+  std::remove(o.c_str());
+  const Tool_run result = run("--source " + s + " --target " + t + " --output " + o +
+                         " --measure symmetric_dirichlet --iterations 50 --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string json = slurp(r);
+  for(const char* key : {"cells", "vertices", "initial_energy", "final_energy", "sweeps", "seconds", "inverted_cells"})
+    EXPECT_FALSE(std::isnan(json_value(json, key))) << key << " missing in\n" << json;
+  EXPECT_NE(json.find("\"measure\": \"symmetric_dirichlet\""), std::string::npos);
+  EXPECT_EQ(json_value(json, "cells"), 288);
+  EXPECT_EQ(json_value(json, "vertices"), 169);
+  EXPECT_LT(json_value(json, "final_energy"), json_value(json, "initial_energy"));
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0);
+  EXPECT_NE(result.output.find("final_energy"), std::string::npos);
+
+  // The output has the source's connectivity, z = 0, and the border where the target had it.
+  const IO::Triangle_soup out = IO::read_triangle_soup(o), in = IO::read_triangle_soup(t);
+  ASSERT_EQ(out.points.size(), in.points.size());
+  EXPECT_EQ(out.triangles, in.triangles);
+  for(std::size_t i = 0; i < out.points.size(); ++i) {
+    EXPECT_EQ(out.points[i][2], 0.);
+    const double x = IO::read_triangle_soup(s).points[i][0], y = IO::read_triangle_soup(s).points[i][1];
+    if(x == 0 || y == 0 || x == 1 || y == 1) {
+      EXPECT_EQ(out.points[i][0], in.points[i][0]);
+      EXPECT_EQ(out.points[i][1], in.points[i][1]);
+    }
+  }
+}
+
+TEST(CommandLine, FixFileAndFreeBoundary)
+{
+  const std::string s = temp("s2.off"), t = temp("t2.off"), o = temp("o2.off"), f = temp("fix.txt");
+  write_planar_pair(s, t);
+  std::ofstream(f) << "# pinned vertices\n0\n12\n\n168\n84\n";
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --fix " + f + " --measure arap");
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Triangle_soup out = IO::read_triangle_soup(o), in = IO::read_triangle_soup(t);
+  for(std::size_t i : {0, 12, 168, 84}) EXPECT_EQ(out.points[i], in.points[i]) << i;
+  // Free border: ARAP relaxes the stretch x -> 2x towards a rigid map, so border vertices move.
+  EXPECT_NE(out.points[6], in.points[6]);
+
+  result = run("--source " + s + " --target " + t + " --output " + o + " --fix none --measure mips --solver bfgs");
+  EXPECT_EQ(result.status, 0) << result.output;
+}
+
+TEST(CommandLine, TutteStartForADiskWithoutTarget)
+{
+  const std::string o = temp("nefertiti_uv.off");
+  const Tool_run result = run("--source " + data("nefertiti.off") + " --output " + o + " --measure conformal*isometric");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("inverted_cells  0"), std::string::npos) << result.output;
+  EXPECT_EQ(IO::read_triangle_soup(o).triangles, IO::read_triangle_soup(data("nefertiti.off")).triangles);
+}
+
+TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
+{
+  const std::string s = temp("s3.off"), t = temp("t3.off"), o = temp("o3.off");
+  write_planar_pair(s, t);
+  auto expect_failure = [&](const std::string& arguments, int status, const std::string& fragment) {
+    std::remove(o.c_str());
+    const Tool_run result = run(arguments);
+    EXPECT_EQ(result.status, status) << arguments << "\n" << result.output;
+    EXPECT_NE(result.output.find(fragment), std::string::npos) << arguments << "\n" << result.output;
+    EXPECT_FALSE(exists(o)) << arguments;
+    EXPECT_FALSE(exists(o + ".partial")) << arguments;
+  };
+  const std::string base = "--source " + s + " --output " + o;
+  expect_failure(base + " --target " + temp("missing.off"), 1, "cannot open");
+  expect_failure(base + " --target " + t + " --measure nonsense", 1, "unknown measure 'nonsense'");
+  expect_failure(base + " --target " + t + " --solver newton", 2, "--solver");
+  expect_failure(base + " --target " + t + " --iterations many", 2, "--iterations expects a number");
+  expect_failure("--source " + s + " --target " + t, 2, "--output is required");
+
+  const std::string fewer = temp("fewer.off");
+  std::ofstream(fewer) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_failure(base + " --target " + fewer, 1, "vertices");
+
+  const std::string truncated = temp("truncated.off");
+  std::ofstream(truncated) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";
+  expect_failure("--source " + truncated + " --output " + o, 1, "truncated");
+
+  const std::string nan = temp("nan.off");
+  std::ofstream(nan) << "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n";
+  expect_failure("--source " + nan + " --output " + o, 1, "not a finite number");
+
+  const std::string quad = temp("quad.off");
+  std::ofstream(quad) << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+  expect_failure("--source " + quad + " --output " + o, 1, "not a triangle");
+
+  // Three triangles on one edge: non-manifold.
+  const std::string fan = temp("fan.off");
+  std::ofstream(fan) << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
+  expect_failure("--source " + fan + " --output " + o, 1, "non-manifold");
+
+  const std::string fix = temp("bad_fix.txt");
+  std::ofstream(fix) << "3\n999\n";
+  expect_failure(base + " --target " + t + " --fix " + fix, 1, "vertex index 999 out of range");
+
+  // An inverted start under a regular measure: the message names the cell.
+  IO::Triangle_soup flipped = IO::read_triangle_soup(t);
+  flipped.points[14] = {1.9, 0.95, 0};
+  const std::string inverted = temp("inverted.off");
+  IO::write_triangle_soup(inverted, flipped);
+  expect_failure(base + " --target " + inverted + " --measure conformal", 1, "inverted");
+
+  EXPECT_EQ(run("--help").status, 0);
+}
