@@ -8,6 +8,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
 #include <CGAL/Distortion_optimization/internal/minimize.h>
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 
@@ -16,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Distortion_optimization {
@@ -38,6 +40,33 @@ Options read_options(const NamedParameters& np)
   if(!(o.threshold >= 0))
     throw Invalid_input("the convergence threshold must be a non-negative number");
   return o;
+}
+
+// Builds the problem from an adapter (Triangle_mesh_adapter or C3t3_adapter), reads vertex weights
+// and constraints from the named parameters (default_fixed(i) when no constraint map is given),
+// minimizes, and returns the problem so that the caller writes its targets back.
+template <int n, class Adapter, class Measure, class NamedParameters, class DefaultFixed>
+std::pair<Result, Optimization_problem<n>>
+minimize_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np, DefaultFixed default_fixed)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Optimization_problem<n> problem;
+  problem.map = adapter.map;
+  auto weights = get_parameter(np, internal_np::vertex_weight_map);
+  if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
+    problem.omega = adapter.vertex_weights(weights);
+  auto constrained = get_parameter(np, CGAL::internal_np::vertex_is_constrained);
+  problem.is_free.resize(adapter.vertex_of.size());
+  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i) {
+    if constexpr(std::is_same<decltype(constrained), CGAL::internal_np::Param_not_found>::value)
+      problem.is_free[i] = !default_fixed(i);
+    else
+      problem.is_free[i] = !get(constrained, adapter.vertex_of[i]);
+  }
+  problem.finalize(choose_parameter(get_parameter(np, internal_np::cell_weighting), Cell_weighting::AVERAGE_VOLUME));
+  Result result = minimize(problem, measure, read_options(np));
+  return {std::move(result), std::move(problem)};
 }
 
 } // namespace internal
@@ -90,7 +119,7 @@ start map with an inverted or flat triangle (the message names it).
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
-Distortion_optimization::Result
+std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::value, Distortion_optimization::Result>
 minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& measure,
                     const NamedParameters& np = parameters::default_values())
 {
@@ -101,32 +130,57 @@ minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& mea
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
   const DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
-
-  DO::internal::Optimization_problem<2> problem;
-  problem.map = adapter.map;
-  auto weights = get_parameter(np, DO::internal_np::vertex_weight_map);
-  if constexpr(!std::is_same<decltype(weights), internal_np::Param_not_found>::value)
-    problem.omega = adapter.vertex_weights(weights);
-  auto constrained = get_parameter(np, internal_np::vertex_is_constrained);
-  problem.is_free.resize(adapter.vertex_of.size());
-  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i) {
-    bool fixed;
-    if constexpr(std::is_same<decltype(constrained), internal_np::Param_not_found>::value)
-      fixed = static_cast<bool>(CGAL::is_border(adapter.vertex_of[i], tm));
-    else
-      fixed = get(constrained, adapter.vertex_of[i]);
-    problem.is_free[i] = !fixed;
-  }
-  problem.finalize(choose_parameter(get_parameter(np, DO::internal_np::cell_weighting),
-                                    DO::Cell_weighting::AVERAGE_VOLUME));
-
-  const DO::Result result = DO::internal::minimize(problem, measure, DO::internal::read_options(np));
+  auto solved = DO::internal::minimize_adapted<2>(adapter, measure, np, [&](std::size_t i) {
+    return static_cast<bool>(CGAL::is_border(adapter.vertex_of[i], tm));
+  });
 
   using Point_2 = typename boost::property_traits<TargetMap>::value_type;
+  const auto& problem = solved.second;
   for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i)
     if(problem.is_free[i])
       put(target, adapter.vertex_of[i], Point_2(problem.map.target[i][0], problem.map.target[i][1]));
-  return result;
+  return solved.first;
+}
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Minimizes the distortion of the simplicial map that sends each vertex `v` of the cells of the
+complex `c3t3` from its position to `get(target, v)`, moving the free vertices' targets. Only the
+cells in the complex count; the triangulation's other cells are ignored, and only vertices of
+complex cells are read or written.
+
+Same method, guarantees and result as the triangle-mesh overload (`n = 3`): no tetrahedron that is
+positive in the start map is ever inverted or flattened (exact predicates).
+
+\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a
+        `Point_3`, e.g. `boost::associative_property_map<std::unordered_map<Vertex_handle, Point_3>>`
+\param np the named parameters of the triangle-mesh overload, with vertex maps keyed by
+        `Vertex_handle`; `vertex_point_map` is not used (positions come from the triangulation).
+        Default constraint: every vertex on the complex boundary (on a facet between a complex
+        cell and a cell outside the complex) is fixed.
+*/
+template <class C3T3, class TargetMap, class Measure,
+          class NamedParameters = parameters::Default_named_parameters>
+std::enable_if_t<Distortion_optimization::internal::Is_c3t3<C3T3>::value, Distortion_optimization::Result>
+minimize_distortion(const C3T3& c3t3, TargetMap target, const Measure& measure,
+                    const NamedParameters& np = parameters::default_values())
+{
+  namespace DO = Distortion_optimization;
+  const DO::internal::C3t3_adapter<C3T3> adapter(c3t3, target);
+  auto solved = DO::internal::minimize_adapted<3>(adapter, measure, np, [&](std::size_t i) {
+    return adapter.on_boundary[i] != 0;
+  });
+
+  using Point_3 = typename boost::property_traits<TargetMap>::value_type;
+  const auto& problem = solved.second;
+  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i)
+    if(problem.is_free[i]) {
+      const auto& x = problem.map.target[i];
+      put(target, adapter.vertex_of[i], Point_3(x[0], x[1], x[2]));
+    }
+  return solved.first;
 }
 
 } // namespace CGAL

@@ -9,6 +9,8 @@
 #define CGAL_DISTORTION_OPTIMIZATION_IO_TRIANGLE_SOUP_H
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/IO/internal/write_file_atomically.h>
 
 #include <array>
 #include <algorithm>
@@ -38,71 +40,6 @@ struct Triangle_soup
 };
 
 namespace internal {
-
-// Reads a stream line by line, dropping comments ('#' to the end of the line) and blank lines,
-// and turns what is left into whitespace-separated tokens; errors name the file and line.
-class Line_reader
-{
-public:
-  Line_reader(std::istream& in, const std::string& name) : in_(in), name_(name) {}
-
-  // Next non-empty line's tokens; false at the end of the stream.
-  bool next(std::vector<std::string>& tokens)
-  {
-    std::string line;
-    while(std::getline(in_, line)) {
-      ++line_number_;
-      const std::size_t hash = line.find('#');
-      if(hash != std::string::npos) line.erase(hash);
-      std::istringstream words(line);
-      tokens.clear();
-      for(std::string w; words >> w;) tokens.push_back(w);
-      if(!tokens.empty()) return true;
-    }
-    if(in_.bad()) fail("read error");
-    return false;
-  }
-
-  [[noreturn]] void fail(const std::string& what) const
-  {
-    throw Invalid_input(name_ + ":" + std::to_string(line_number_) + ": " + what);
-  }
-
-  double coordinate(const std::string& token) const
-  {
-    const char* begin = token.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(begin, &end);
-    if(end == begin || *end != '\0') fail("'" + token + "' is not a number");
-    if(!std::isfinite(x) || errno == ERANGE) fail("coordinate '" + token + "' is not a finite number");
-    return x;
-  }
-
-  long long integer(const std::string& token) const
-  {
-    const char* begin = token.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const long long i = std::strtoll(begin, &end, 10);
-    if(end == begin || *end != '\0' || errno == ERANGE) fail("'" + token + "' is not an integer");
-    return i;
-  }
-
-private:
-  std::istream& in_;
-  std::string name_;
-  std::size_t line_number_ = 0;
-};
-
-inline std::string extension(const std::string& path)
-{
-  const std::size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string e = path.substr(dot + 1);
-  for(char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
 
 inline void check_triangle(const Line_reader& reader, const std::array<std::size_t, 3>& t, std::size_t face)
 {
@@ -202,31 +139,6 @@ inline Triangle_soup read_triangle_soup(const std::string& path)
   Triangle_soup soup = e == "off" ? read_OFF(in, path) : read_OBJ(in, path);
   if(soup.triangles.empty()) throw Invalid_input(path + ": no triangle");
   return soup;
-}
-
-/// \ingroup PkgDistortionOptimizationIO
-/// Writes a file whole or not at all: `write(stream)` fills a temporary file beside `path`, which
-/// is renamed to `path` only when everything was written.
-/// \throws Invalid_input if the file cannot be written (the temporary file is removed).
-inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write)
-{
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if(!out) throw Invalid_input(path + ": cannot write (is the folder writable?)");
-    out.precision(17);
-    write(out);
-    out.flush();
-    if(!out) {
-      out.close();
-      std::remove(temporary.c_str());
-      throw Invalid_input(path + ": write error");
-    }
-  }
-  if(std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Invalid_input(path + ": cannot replace the file");
-  }
 }
 
 /// \ingroup PkgDistortionOptimizationIO

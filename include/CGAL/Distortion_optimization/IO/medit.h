@@ -1,0 +1,318 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// A strict reader and an atomic writer of tetrahedral meshes in the ASCII Medit format (.mesh),
+// the format of CGAL::IO::output_to_medit(), TetGen, MMG and Gamma's libMeshb. Vertex and
+// tetrahedron order is kept exactly as in the file (source/target pairs are matched by index).
+// Anything the reader does not understand is an error naming the file and line.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_IO_MEDIT_H
+#define CGAL_DISTORTION_OPTIMIZATION_IO_MEDIT_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/IO/internal/write_file_atomically.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <istream>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace IO {
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Vertices and tetrahedra as they appear in a file (0-based indices), with the Medit reference
+/// of each tetrahedron (CGAL writes the subdomain index there). Vertex references are not kept.
+struct Tetrahedron_soup
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tetrahedra;
+  std::vector<int> labels; ///< one per tetrahedron, the Medit reference
+};
+
+namespace internal {
+
+// The sections of a 3D Medit file, with the number of values of each entry (libMeshb's table,
+// ASCII layout; "Pentahedra" is the old name of "Prisms"). Sections whose entries have a variable
+// or unknown layout (solutions, Geometry file names, polygons, ...) are not listed: a file using
+// them is rejected rather than misread.
+struct Medit_section
+{
+  const char* name;
+  int values_per_entry;
+};
+
+// The section named `keyword` (in any case), or null.
+inline const Medit_section* medit_section(const std::string& keyword)
+{
+  static const Medit_section sections[] = {
+    {"Vertices", 4},               {"Tetrahedra", 5},
+    {"Edges", 3},                  {"Triangles", 4},
+    {"Quadrilaterals", 5},         {"Prisms", 7},
+    {"Pentahedra", 7},             {"Pyramids", 6},
+    {"Hexahedra", 9},              {"Corners", 1},
+    {"Ridges", 1},                 {"RequiredVertices", 1},
+    {"RequiredEdges", 1},          {"RequiredTriangles", 1},
+    {"RequiredQuadrilaterals", 1}, {"Normals", 3},
+    {"Tangents", 3},               {"NormalAtVertices", 2},
+    {"TangentAtVertices", 2},      {"NormalAtTriangleVertices", 3},
+    {"NormalAtQuadrilateralVertices", 4}, {"TangentAtEdgeVertices", 3},
+    {"EdgesP2", 4},                {"TrianglesP2", 7},
+    {"QuadrilateralsQ2", 10}};
+  for(const Medit_section& s : sections) {
+    std::size_t i = 0;
+    while(s.name[i] != '\0' && i < keyword.size() &&
+          std::tolower(static_cast<unsigned char>(s.name[i])) == std::tolower(static_cast<unsigned char>(keyword[i])))
+      ++i;
+    if(s.name[i] == '\0' && i == keyword.size()) return &s;
+  }
+  return nullptr;
+}
+
+// Whether a token is one of the keywords above or a header keyword: seen where a value is
+// expected, it means the section before it is shorter than announced.
+inline bool is_medit_keyword(const std::string& token)
+{
+  if(token.empty() || !std::isalpha(static_cast<unsigned char>(token[0]))) return false; // numbers, fast
+  const std::string k = to_lower(token);
+  return medit_section(k) != nullptr || k == "meshversionformatted" || k == "dimension" || k == "end" ||
+         k == "angleofcornerbound";
+}
+
+class Medit_reader
+{
+public:
+  Medit_reader(std::istream& in, const std::string& name) : tokens_(in, name) {}
+
+  Tetrahedron_soup read()
+  {
+    std::string t;
+    if(!tokens_.next(t)) tokens_.fail("empty file");
+    if(to_lower(t) != "meshversionformatted")
+      tokens_.fail("not a Medit file: expected 'MeshVersionFormatted', found '" + t + "'");
+    const long long version = tokens_.integer(header_value("MeshVersionFormatted"));
+    if(version < 1 || version > 4) tokens_.fail("unsupported MeshVersionFormatted " + std::to_string(version) + " (expected 1 to 4)");
+
+    bool has_dimension = false, has_vertices = false, has_tetrahedra = false;
+    while(tokens_.next(t)) {
+      const std::string key = to_lower(t);
+      if(key == "end") {
+        if(tokens_.next(t)) tokens_.fail("'" + t + "' after End");
+        break;
+      }
+      if(key == "meshversionformatted") tokens_.fail("MeshVersionFormatted repeated");
+      if(key == "dimension") {
+        if(has_dimension) tokens_.fail("Dimension repeated");
+        const std::string d = header_value("Dimension");
+        if(tokens_.integer(d) != 3) tokens_.fail("Dimension " + d + ": only 3D meshes are supported");
+        has_dimension = true;
+        continue;
+      }
+      const Medit_section* section = medit_section(key);
+      if(section == nullptr && key != "angleofcornerbound") {
+        if(Token_reader::is_number(t))
+          tokens_.fail("expected a section keyword, found '" + t + "' (does the section before announce too few entries?)");
+        tokens_.fail("unsupported Medit section '" + t + "' (its layout is unknown)");
+      }
+      if(!has_dimension) tokens_.fail("section " + t + " before Dimension");
+      if(section == nullptr) { // AngleOfCornerBound: one value, no count
+        check_number("AngleOfCornerBound", value("AngleOfCornerBound", 1, 0));
+        continue;
+      }
+      const std::string name = section->name;
+      if(name == "Vertices") {
+        if(has_vertices) tokens_.fail("second Vertices section");
+        read_vertices();
+        has_vertices = true;
+      } else if(name == "Tetrahedra") {
+        if(has_tetrahedra) tokens_.fail("second Tetrahedra section");
+        if(!has_vertices) tokens_.fail("Tetrahedra before Vertices");
+        read_tetrahedra();
+        has_tetrahedra = true;
+      } else {
+        skip(*section);
+      }
+    }
+    if(!has_vertices) tokens_.fail("no Vertices section");
+    if(!has_tetrahedra) tokens_.fail("no Tetrahedra section");
+    return std::move(soup_);
+  }
+
+private:
+  std::string header_value(const std::string& keyword)
+  {
+    std::string v;
+    if(!tokens_.next(v)) tokens_.fail("missing value after " + keyword);
+    return v;
+  }
+
+  // The entry count after a section keyword, checked against what the rest of the file can hold
+  // (each value takes at least one character and one separator), so that a corrupt count fails
+  // at once instead of allocating memory for it.
+  long long count(const std::string& section, int values_per_entry)
+  {
+    std::string c;
+    if(!tokens_.next(c)) tokens_.fail("missing " + section + " count");
+    if(is_medit_keyword(c)) tokens_.fail("missing " + section + " count (found '" + c + "')");
+    const long long n = tokens_.integer(c);
+    if(n < 0) tokens_.fail("negative " + section + " count " + c);
+    const long long rest = tokens_.remaining_bytes();
+    if(rest >= 0 && n > (rest + 1) / (2 * values_per_entry))
+      tokens_.fail(section + " count " + c + " is more than the rest of the file can hold");
+    return n;
+  }
+
+  // The next value of entry `entry` of a section announcing `n` entries.
+  std::string value(const std::string& section, long long n, long long entry)
+  {
+    std::string v;
+    if(!tokens_.next(v) || is_medit_keyword(v))
+      tokens_.fail("truncated " + section + " section: " + std::to_string(n) + " entries announced, " +
+                   std::to_string(entry) + " found");
+    return v;
+  }
+
+  void check_number(const std::string& section, const std::string& v) const
+  {
+    if(!Token_reader::is_number(v)) tokens_.fail("'" + v + "' in " + section + " is not a number");
+  }
+
+  static std::size_t capped(long long n) { return static_cast<std::size_t>(std::min<long long>(n, 1 << 20)); }
+
+  void read_vertices()
+  {
+    const long long n = count("Vertices", 4);
+    soup_.points.reserve(capped(n));
+    for(long long v = 0; v < n; ++v) {
+      std::array<double, 3> p;
+      for(int i = 0; i < 3; ++i) p[i] = tokens_.coordinate(value("Vertices", n, v));
+      tokens_.integer(value("Vertices", n, v)); // the reference, checked but not kept
+      soup_.points.push_back(p);
+    }
+  }
+
+  void read_tetrahedra()
+  {
+    const long long n = count("Tetrahedra", 5);
+    const long long nv = static_cast<long long>(soup_.points.size());
+    soup_.tetrahedra.reserve(capped(n));
+    soup_.labels.reserve(capped(n));
+    for(long long c = 0; c < n; ++c) {
+      std::array<std::size_t, 4> tet;
+      for(int i = 0; i < 4; ++i) {
+        const std::string s = value("Tetrahedra", n, c);
+        const long long index = tokens_.integer(s);
+        if(index < 1 || index > nv)
+          tokens_.fail("tetrahedron " + std::to_string(c) + " has vertex index " + s + " out of range (1 to " +
+                       std::to_string(nv) + ")");
+        tet[i] = static_cast<std::size_t>(index - 1);
+        for(int j = 0; j < i; ++j)
+          if(tet[j] == tet[i]) tokens_.fail("tetrahedron " + std::to_string(c) + " repeats vertex " + s);
+      }
+      const std::string s = value("Tetrahedra", n, c);
+      const long long label = tokens_.integer(s);
+      if(label < std::numeric_limits<int>::min() || label > std::numeric_limits<int>::max())
+        tokens_.fail("tetrahedron " + std::to_string(c) + " has reference " + s + " out of range");
+      soup_.tetrahedra.push_back(tet);
+      soup_.labels.push_back(static_cast<int>(label));
+    }
+  }
+
+  void skip(const Medit_section& section)
+  {
+    const long long n = count(section.name, section.values_per_entry);
+    for(long long e = 0; e < n; ++e)
+      for(int i = 0; i < section.values_per_entry; ++i) check_number(section.name, value(section.name, n, e));
+  }
+
+  Token_reader tokens_;
+  Tetrahedron_soup soup_;
+};
+
+} // namespace internal
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Reads a 3D ASCII Medit mesh: "MeshVersionFormatted v" (1 to 4), "Dimension 3", "Vertices" n
+/// then n entries "x y z ref", "Tetrahedra" n then n entries "a b c d ref" (1-based), and an
+/// optional "End". Keywords are case-insensitive, '#' starts a comment, and values may be spread
+/// over lines in any way. The other sections of the format with a fixed layout (Edges, Triangles,
+/// Quadrilaterals, Prisms, Pyramids, Hexahedra, Corners, Ridges, Required*, Normals, Tangents,
+/// NormalAt*, TangentAt*, EdgesP2, TrianglesP2, QuadrilateralsQ2, AngleOfCornerBound) are checked
+/// and skipped. `name` is used in error messages.
+/// \throws Invalid_input naming the line for: a missing header, a dimension other than 3, a missing
+/// Vertices or Tetrahedra section, a section the reader does not know, a negative count, a count
+/// larger than the rest of the file can hold, a truncated section, a token that is not a number,
+/// a non-finite coordinate, a vertex index out of range, a tetrahedron repeating a vertex, or
+/// anything after End.
+inline Tetrahedron_soup read_MEDIT(std::istream& in, const std::string& name = "MEDIT input")
+{
+  return internal::Medit_reader(in, name).read();
+}
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Reads a `.mesh` file with `read_MEDIT()`.
+/// \throws Invalid_input if the file cannot be opened, has another extension, is malformed or has
+/// no tetrahedron.
+inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
+{
+  if(internal::extension(path) != "mesh") throw Invalid_input(path + ": unsupported extension (use .mesh)");
+  std::ifstream in(path, std::ios::binary);
+  if(!in) throw Invalid_input(path + ": cannot open the file");
+  Tetrahedron_soup soup = read_MEDIT(in, path);
+  if(soup.tetrahedra.empty()) throw Invalid_input(path + ": no tetrahedron");
+  return soup;
+}
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Writes `soup` as an ASCII Medit file (MeshVersionFormatted 1, Dimension 3, Vertices with
+/// reference 0, Tetrahedra with `soup.labels` as references, or 1 for all when `labels` is empty,
+/// End), atomically, with 17 significant digits so that `read_MEDIT()` gives back the same
+/// doubles.
+/// \throws Invalid_input (before anything is written) if `labels` is neither empty nor one per
+/// tetrahedron, a coordinate is not finite, or a tetrahedron has an index out of range or repeats
+/// a vertex, i.e. whenever `read_MEDIT()` would reject the file; or if the file cannot be written.
+inline void write_MEDIT(const std::string& path, const Tetrahedron_soup& soup)
+{
+  if(!soup.labels.empty() && soup.labels.size() != soup.tetrahedra.size())
+    throw Invalid_input(path + ": " + std::to_string(soup.labels.size()) + " labels for " +
+                        std::to_string(soup.tetrahedra.size()) + " tetrahedra");
+  for(std::size_t v = 0; v < soup.points.size(); ++v)
+    for(double x : soup.points[v])
+      if(!std::isfinite(x)) throw Invalid_input(path + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+  for(std::size_t c = 0; c < soup.tetrahedra.size(); ++c) {
+    const auto& t = soup.tetrahedra[c];
+    for(int i = 0; i < 4; ++i) {
+      if(t[i] >= soup.points.size())
+        throw Invalid_input(path + ": tetrahedron " + std::to_string(c) + " has vertex index " + std::to_string(t[i]) +
+                            " out of range");
+      for(int j = 0; j < i; ++j)
+        if(t[j] == t[i]) throw Invalid_input(path + ": tetrahedron " + std::to_string(c) + " repeats vertex " + std::to_string(t[i]));
+    }
+  }
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << soup.points.size() << '\n';
+    for(const auto& p : soup.points) out << p[0] << ' ' << p[1] << ' ' << p[2] << " 0\n";
+    out << "Tetrahedra\n" << soup.tetrahedra.size() << '\n';
+    for(std::size_t c = 0; c < soup.tetrahedra.size(); ++c) {
+      const auto& t = soup.tetrahedra[c];
+      out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
+          << (soup.labels.empty() ? 1 : soup.labels[c]) << '\n';
+    }
+    out << "End\n";
+  });
+}
+
+} // namespace IO
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_IO_MEDIT_H

@@ -1,0 +1,109 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Start maps for the tetrahedra of a Mesh_complex_3_in_triangulation_3: a user function (e.g. the
+// radial map x |x| of the paper's Fig. 5), a star-shaped domain onto the unit ball, and the
+// harmonic map for fixed boundary targets. Targets are property maps keyed by Vertex_handle; only
+// vertices of cells in the complex are written.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_VOLUME_MAPS_H
+#define CGAL_DISTORTION_OPTIMIZATION_VOLUME_MAPS_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
+#include <CGAL/Distortion_optimization/internal/laplacian.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationRef
+/// `put(target, v, f(p))` for every vertex `v` (position `p`, a `Point_3`) of the cells of the complex.
+template <class C3T3, class TargetMap, class Function>
+void map_vertices(const C3T3& c3t3, TargetMap target, const Function& f)
+{
+  const auto& tr = c3t3.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  std::unordered_set<typename C3T3::Triangulation::Vertex_handle> done;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(done.insert(c->vertex(i)).second) put(target, c->vertex(i), f(point(tr.point(c, i))));
+}
+
+/// \ingroup PkgDistortionOptimizationRef
+/// Maps a domain star-shaped about `center` onto the unit ball centred at the origin: the point
+/// `center + r u` (|u| = 1) goes to `(r / R(u)) u`, where `R(u)` is the distance from `center` to
+/// the complex boundary along `u` (found by ray casting in an AABB tree of the boundary facets);
+/// boundary vertices land on the unit sphere. This is the radial construction of Naitsat, Saucan
+/// and Zeevi, "Geometry-based distortion measures ...", section 4.4.
+/// \throws Invalid_input if `center` is not strictly inside the domain or a ray misses the boundary.
+template <class C3T3, class TargetMap, class Point_3>
+void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3& center)
+{
+  using K = typename Kernel_traits<Point_3>::Kernel;
+  using Triangle = typename K::Triangle_3;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, typename std::vector<Triangle>::const_iterator>>>;
+  const auto& tr = c3t3.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  std::vector<Triangle> boundary;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        boundary.emplace_back(point(tr.point(c, (i + 1) % 4)), point(tr.point(c, (i + 2) % 4)), point(tr.point(c, (i + 3) % 4)));
+  if(boundary.empty()) throw Invalid_input("the complex has no boundary facet");
+  Tree tree(boundary.begin(), boundary.end());
+  map_vertices(c3t3, target, [&](const Point_3& p) {
+    const auto u = p - center;
+    const double r = std::sqrt(CGAL::to_double(u.squared_length()));
+    if(r == 0) return Point_3(0, 0, 0);
+    // The farthest intersection of the ray with the boundary: for a star-shaped domain there is one
+    // exit point (rays through edges or vertices may report it several times).
+    std::vector<typename Tree::template Intersection_and_primitive_id<typename K::Ray_3>::Type> hits;
+    tree.all_intersections(typename K::Ray_3(center, u), std::back_inserter(hits));
+    double R = 0;
+    for(const auto& h : hits)
+      if(const Point_3* q = boost::get<Point_3>(&h.first))
+        R = std::max(R, std::sqrt(CGAL::to_double(CGAL::squared_distance(center, *q))));
+    if(!(R > 0)) throw Invalid_input("a ray from the centre misses the boundary: is the centre inside the domain?");
+    const double s = 1. / R;
+    return Point_3(s * CGAL::to_double(u.x()), s * CGAL::to_double(u.y()), s * CGAL::to_double(u.z()));
+  });
+}
+
+/// \ingroup PkgDistortionOptimizationRef
+/// Replaces the targets of the free vertices by the harmonic map (minimizer of the Dirichlet
+/// energy sum_c vol(c) |J_c|^2, a sparse volume-weighted cotangent Laplacian solve) for the targets
+/// of the fixed ones. Fixed: `CGAL::parameters::vertex_is_constrained_map` (keyed by
+/// Vertex_handle), default the complex boundary. The result may invert cells where the boundary
+/// is not convex; `CGAL::compute_distortion`-style checks belong to the caller.
+template <class C3T3, class TargetMap, class NamedParameters = parameters::Default_named_parameters>
+void harmonic_map(const C3T3& c3t3, TargetMap target, const NamedParameters& np = parameters::default_values())
+{
+  const internal::C3t3_adapter<C3T3> adapter(c3t3, target);
+  std::vector<unsigned char> is_free(adapter.vertex_of.size());
+  auto constrained = parameters::get_parameter(np, CGAL::internal_np::vertex_is_constrained);
+  for(std::size_t i = 0; i < is_free.size(); ++i) {
+    if constexpr(std::is_same<decltype(constrained), CGAL::internal_np::Param_not_found>::value)
+      is_free[i] = !adapter.on_boundary[i];
+    else
+      is_free[i] = !get(constrained, adapter.vertex_of[i]);
+  }
+  const auto x = internal::harmonic_targets(adapter.map, is_free);
+  using Point_3 = typename boost::property_traits<TargetMap>::value_type;
+  for(std::size_t i = 0; i < is_free.size(); ++i)
+    if(is_free[i]) put(target, adapter.vertex_of[i], Point_3(x[i][0], x[i][1], x[i][2]));
+}
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_VOLUME_MAPS_H

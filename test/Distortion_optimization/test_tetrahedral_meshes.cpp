@@ -1,0 +1,259 @@
+// minimize_distortion on Mesh_complex_3_in_triangulation_3: Mesh_3 and TetGen meshes, the radial
+// map of the paper's Fig. 5, start maps, write-back only to complex vertices.
+
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
+#include <CGAL/Distortion_optimization/tetrahedralize_with_tetgen.h>
+#include <CGAL/Distortion_optimization/volume_maps.h>
+#include <CGAL/minimize_distortion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polyhedral_mesh_domain_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <boost/property_map/property_map.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace DO = CGAL::Distortion_optimization;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point_3 = K::Point_3;
+using Implicit_domain = CGAL::Labeled_mesh_domain_3<K>;
+using Tr = CGAL::Mesh_triangulation_3<Implicit_domain>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+using Criteria = CGAL::Mesh_criteria_3<Tr>;
+using Vertex_handle = Tr::Vertex_handle;
+using Target_storage = std::unordered_map<Vertex_handle, Point_3>;
+using Target_map = boost::associative_property_map<Target_storage>;
+
+namespace {
+
+double unit_sphere(const Point_3& p) { return CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()) - 1.; }
+
+C3t3 mesh_sphere(double size)
+{
+  namespace params = CGAL::parameters;
+  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(unit_sphere, K::Sphere_3(CGAL::ORIGIN, 4.));
+  Criteria criteria(params::facet_angle = 25, params::facet_size = size, params::facet_distance = size / 10,
+                    params::cell_radius_edge_ratio = 3, params::cell_size = size);
+  return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+}
+
+Point_3 radial(const Point_3& p)   // f0(x) = x |x|, the start map of the paper's Fig. 5
+{
+  const double r = std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()));
+  return Point_3(r * p.x(), r * p.y(), r * p.z());
+}
+
+std::size_t inverted(const C3t3& c3t3, const Target_storage& target)
+{
+  std::size_t count = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(CGAL::orientation(target.at(c->vertex(0)), target.at(c->vertex(1)), target.at(c->vertex(2)),
+                         target.at(c->vertex(3))) != CGAL::POSITIVE) ++count;
+  return count;
+}
+
+std::unordered_set<Vertex_handle> boundary_vertices(const C3t3& c3t3)
+{
+  std::unordered_set<Vertex_handle> b;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        for(int j = 1; j < 4; ++j) b.insert(c->vertex((i + j) % 4));
+  return b;
+}
+
+// A property map that records which keys are written.
+struct Recording_map
+{
+  Target_storage* storage;
+  std::unordered_set<Vertex_handle>* written;
+  using key_type = Vertex_handle;
+  using value_type = Point_3;
+  using reference = const Point_3&;
+  using category = boost::read_write_property_map_tag;
+  friend const Point_3& get(const Recording_map& m, Vertex_handle v) { return m.storage->at(v); }
+  friend void put(const Recording_map& m, Vertex_handle v, const Point_3& p)
+  {
+    m.written->insert(v);
+    (*m.storage)[v] = p;
+  }
+};
+
+} // namespace
+
+TEST(TetrahedralMeshes, RadialMapOfAMesh3BallImprovesWithoutFlips)
+{
+  const C3t3 c3t3 = mesh_sphere(0.3);
+  ASSERT_GT(c3t3.number_of_cells_in_complex(), 500u);
+  // Mesh_3's cells in the complex are positively oriented.
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    ASSERT_EQ(CGAL::orientation(c->vertex(0)->point().point(), c->vertex(1)->point().point(),
+                                c->vertex(2)->point().point(), c->vertex(3)->point().point()), CGAL::POSITIVE);
+
+  Target_storage storage;
+  DO::map_vertices(c3t3, Target_map(storage), radial);
+  ASSERT_EQ(inverted(c3t3, storage), 0u);
+  const Target_storage start = storage;
+  std::unordered_set<Vertex_handle> written;
+
+  std::vector<double> energies;
+  const DO::Result r = CGAL::minimize_distortion(c3t3, Recording_map{&storage, &written}, DO::Conformal_dilatation(),
+    CGAL::parameters::number_of_iterations(15).visitor([&](std::size_t, double e) { energies.push_back(e); return true; }));
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  for(std::size_t i = 1; i < energies.size(); ++i) EXPECT_LE(energies[i], energies[i - 1]);
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_EQ(inverted(c3t3, storage), 0u);
+
+  // Boundary vertices unchanged bit for bit; only interior vertices of complex cells written.
+  const auto boundary = boundary_vertices(c3t3);
+  for(Vertex_handle v : boundary) EXPECT_EQ(storage.at(v), start.at(v));
+  EXPECT_FALSE(written.empty());
+  for(Vertex_handle v : written) {
+    EXPECT_TRUE(start.count(v)) << "a vertex outside the complex was written";
+    EXPECT_FALSE(boundary.count(v)) << "a fixed vertex was written";
+  }
+  EXPECT_EQ(storage.size(), start.size());
+}
+
+TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
+{
+  // The cube [-1, 1]^3 as a closed triangle surface.
+  std::vector<std::array<double, 3>> corners;
+  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
+  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  DO::tetrahedralize_with_tetgen(corners, faces, 0.01, points, tets);
+  ASSERT_GT(tets.size(), 800u);
+  double volume = 0;
+  for(const auto& t : tets) {
+    auto P = [&](int k) { return Point_3(points[t[k]][0], points[t[k]][1], points[t[k]][2]); };
+    EXPECT_EQ(CGAL::orientation(P(0), P(1), P(2), P(3)), CGAL::POSITIVE);   // TetGen's output is positive
+    volume += CGAL::to_double(CGAL::volume(P(0), P(1), P(2), P(3)));
+  }
+  EXPECT_NEAR(volume, 8., 1e-9);
+
+  C3t3 c3t3;
+  const auto handles = DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  ASSERT_EQ(c3t3.number_of_cells_in_complex(), tets.size());
+  Target_storage storage;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(handles[i] != Vertex_handle()) storage[handles[i]] = radial(Point_3(points[i][0], points[i][1], points[i][2]));
+  const auto r = CGAL::minimize_distortion(c3t3, Target_map(storage), DO::Symmetric_dirichlet(),
+                                           CGAL::parameters::number_of_iterations(10));
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  EXPECT_EQ(inverted(c3t3, storage), 0u);
+
+  // Star-shaped cube -> unit ball: the boundary lands on the sphere, the inside strictly inside.
+  // (Tetrahedra with four vertices on the cube's surface near its edges can flatten: the radial
+  // construction does not promise a valid map, only a start to repair.)
+  Target_storage ball;
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, 0.02, 0.03));
+  const auto boundary = boundary_vertices(c3t3);
+  for(const auto& kv : ball) {
+    const Point_3& q = kv.second;
+    const double r = std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z()));
+    if(boundary.count(kv.first)) EXPECT_NEAR(r, 1., 1e-9);
+    else EXPECT_LT(r, 1.);
+  }
+}
+
+TEST(TetrahedralMeshes, StarShapedBallAndHarmonicStartsAreValidAndImprove)
+{
+  // A Mesh_3 ball (a polyhedral approximation of the unit ball) onto the exact unit ball.
+  const C3t3 c3t3 = mesh_sphere(0.25);
+  Target_storage ball;
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, -0.02, 0.03));
+  EXPECT_EQ(inverted(c3t3, ball), 0u);
+  for(Vertex_handle v : boundary_vertices(c3t3)) {
+    const Point_3& q = ball.at(v);
+    EXPECT_NEAR(std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z())), 1., 1e-9);
+  }
+  // The harmonic map for the radial boundary values, then optimized.
+  Target_storage harmonic;
+  DO::map_vertices(c3t3, Target_map(harmonic), radial);
+  DO::harmonic_map(c3t3, Target_map(harmonic));
+  EXPECT_EQ(inverted(c3t3, harmonic), 0u);
+  const auto r = CGAL::minimize_distortion(c3t3, Target_map(harmonic), DO::Conformal_dilatation(),
+                                           CGAL::parameters::number_of_iterations(5));
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  EXPECT_EQ(inverted(c3t3, harmonic), 0u);
+}
+
+TEST(TetrahedralMeshes, HarmonicMapOfAnAffineBoundaryIsThatAffineMap)
+{
+  const C3t3 c3t3 = mesh_sphere(0.4);
+  auto affine = [](const Point_3& p) {
+    return Point_3(2 * p.x() + 0.3 * p.y() - 1, p.y() - 0.5 * p.z(), 0.7 * p.z() + 0.2 * p.x() + 4);
+  };
+  Target_storage exact, harmonic;
+  DO::map_vertices(c3t3, Target_map(exact), affine);
+  DO::map_vertices(c3t3, Target_map(harmonic), [](const Point_3& p) { return p; });
+  for(Vertex_handle v : boundary_vertices(c3t3)) harmonic[v] = exact[v];
+  DO::harmonic_map(c3t3, Target_map(harmonic));
+  double error = 0;
+  for(const auto& kv : exact) error = std::max(error, std::sqrt(CGAL::to_double(CGAL::squared_distance(kv.second, harmonic.at(kv.first)))));
+  EXPECT_LT(error, 1e-9);   // affine maps are harmonic for the cotangent Laplacian
+}
+
+TEST(TetrahedralMeshes, PolyhedralDomainFromAClosedSurfaceMesh)
+{
+  using Mesh = CGAL::Surface_mesh<Point_3>;
+  using Poly_domain = CGAL::Polyhedral_mesh_domain_3<Mesh, K>;
+  using Poly_tr = CGAL::Mesh_triangulation_3<Poly_domain>::type;
+  using Poly_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Poly_tr>;
+  namespace params = CGAL::parameters;
+  Mesh octahedron;
+  CGAL::make_icosahedron(octahedron, Point_3(0, 0, 0), 1.);
+  Poly_domain domain(octahedron);
+  CGAL::Mesh_criteria_3<Poly_tr> criteria(params::facet_distance = 0.05, params::cell_radius_edge_ratio = 3,
+                                           params::cell_size = 0.25);
+  const Poly_c3t3 c3t3 = CGAL::make_mesh_3<Poly_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  ASSERT_GT(c3t3.number_of_cells_in_complex(), 50u);
+  std::unordered_map<Poly_tr::Vertex_handle, Point_3> storage;
+  boost::associative_property_map<decltype(storage)> target(storage);
+  DO::map_vertices(c3t3, target, [](const Point_3& p) { return Point_3(p.x() + 0.1 * p.y() * p.y(), p.y(), p.z()); });
+  const auto r = CGAL::minimize_distortion(c3t3, target, DO::MIPS(), CGAL::parameters::number_of_iterations(5));
+  EXPECT_LE(r.final_energy, r.initial_energy);
+  EXPECT_EQ(r.inverted_cells, 0u);
+}
+
+TEST(TetrahedralMeshes, BadInput)
+{
+  std::vector<std::array<double, 3>> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}};
+  C3t3 c3t3;
+  try {
+    DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 3}}, c3t3);
+    ADD_FAILURE() << "a flat tetrahedron was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("tetrahedron 0 is flat"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 7}}, c3t3), DO::Invalid_input);
+
+  // An inverted start under a normalized measure names the cell and writes nothing.
+  const auto handles = DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 4}, {1, 3, 2, 4}}, c3t3);
+  Target_storage storage;
+  for(std::size_t i = 0; i < points.size(); ++i) storage[handles[i]] = Point_3(points[i][0], points[i][1], points[i][2]);
+  storage[handles[4]] = Point_3(0.2, 0.2, -1);   // below the base: both tetrahedra inverted
+  const Target_storage before = storage;
+  try {
+    CGAL::minimize_distortion(c3t3, Target_map(storage), DO::Conformal_dilatation(),
+                              CGAL::parameters::vertex_is_constrained_map(boost::make_function_property_map<Vertex_handle>(
+                                [](Vertex_handle) { return false; })));
+    ADD_FAILURE() << "an inverted start was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(storage, before);
+}
