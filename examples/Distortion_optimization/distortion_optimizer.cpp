@@ -3,23 +3,36 @@
 //   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
 //                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
 //
-// S, T, O: OFF or OBJ triangle meshes with the same vertices and faces in the same order; a planar
-// target has z = 0. Without --target, a disk-topology source gets a Tutte start (circle border).
+// S, T, O: OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same vertices
+// and cells in the same order; a planar target has z = 0. Without --target, a disk-topology
+// triangle source gets a Tutte start (circle border). O may also be .vtu: the optimized map with
+// each cell's distortion, for ParaView.
 // Energies are volume-weighted means sum vol(c) D(J_c) / sum vol(c).
 // Exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command line.
 
+#include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+#include <CGAL/Distortion_optimization/IO/vtu.h>
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
+#include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <boost/property_map/function_property_map.hpp>
+#include <boost/property_map/property_map.hpp>
+
 #include <cstdio>
 #include <fstream>
+#include <unordered_map>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -29,6 +42,8 @@ namespace DO = CGAL::Distortion_optimization;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 using Vertex = Mesh::Vertex_index;
+using Tr = CGAL::Mesh_triangulation_3<CGAL::Labeled_mesh_domain_3<K>>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
 
 namespace {
 
@@ -36,8 +51,10 @@ const char* usage =
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
   "         [--threads N] [--report R.json]\n"
-  "  S, T, O      OFF or OBJ triangle meshes, same vertices and faces in the same order;\n"
-  "               a planar target has z = 0; without --target a disk source gets a Tutte start\n"
+  "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
+  "               vertices and cells in the same order; a planar target has z = 0; without\n"
+  "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
+  "               each cell's distortion, for ParaView)\n"
   "  NAME         conformal (default), condition, mips, isometric, arap, symmetric_dirichlet,\n"
   "               volume, dirichlet, or a product such as conformal*isometric\n"
   "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
@@ -97,10 +114,12 @@ Command_line parse(int argc, char** argv)
   if(c.solver != "gd" && c.solver != "bfgs") throw Usage_error("--solver is gd or bfgs, not '" + c.solver + "'");
   if(c.threads == 0) throw Usage_error("--threads must be at least 1");
   if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
-  for(const std::string& path : {c.output}) {
-    const std::string e = DO::IO::internal::extension(path);
-    if(e != "off" && e != "obj") throw Usage_error("--output must end in .off or .obj");
-  }
+  const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
+  if(in == "mesh" ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
+    throw Usage_error(in == "mesh" ? "--output must end in .mesh or .vtu for a tetrahedral source"
+                                   : "--output must end in .off, .obj or .vtu");
+  if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
+    throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
   return c;
 }
 
@@ -159,6 +178,14 @@ std::vector<unsigned char> read_fixed_vertices(const std::string& path, std::siz
   return fixed;
 }
 
+// The options both kinds of mesh share.
+auto common_parameters(const Command_line& c)
+{
+  const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
+  return DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold))
+    .number_of_iterations(c.iterations);
+}
+
 std::string json_number(double x)
 {
   if(!std::isfinite(x)) return "null";
@@ -167,7 +194,28 @@ std::string json_number(double x)
   return buffer;
 }
 
-int run(const Command_line& c)
+// Prints the results and writes them to --report as JSON.
+void report(const Command_line& c, std::size_t cells, std::size_t vertices, const std::string& measure_name,
+            const DO::Result& r)
+{
+  std::ostringstream json;
+  json << "{\n  \"cells\": " << cells << ",\n  \"vertices\": " << vertices
+       << ",\n  \"measure\": \"" << measure_name << "\",\n  \"initial_energy\": " << json_number(r.initial_energy)
+       << ",\n  \"final_energy\": " << json_number(r.final_energy) << ",\n  \"sweeps\": " << r.iterations
+       << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"inverted_cells\": " << r.inverted_cells
+       << ",\n  \"converged\": " << (r.converged ? "true" : "false") << ",\n  \"energy_per_sweep\": [";
+  for(std::size_t i = 0; i < r.energy_per_iteration.size(); ++i)
+    json << (i ? ", " : "") << json_number(r.energy_per_iteration[i]);
+  json << "]\n}\n";
+  if(!c.report.empty())
+    DO::IO::write_file_atomically(c.report, [&](std::ostream& out) { out << json.str(); });
+  std::printf("cells           %zu\nvertices        %zu\nmeasure         %s\ninitial_energy  %.12g\n"
+              "final_energy    %.12g\nsweeps          %zu\nseconds         %.3f\ninverted_cells  %zu\n",
+              cells, vertices, measure_name.c_str(), r.initial_energy, r.final_energy, r.iterations, r.seconds,
+              r.inverted_cells);
+}
+
+int run_triangles(const Command_line& c)
 {
   const DO::IO::Triangle_soup source = DO::IO::read_triangle_soup(c.source);
   Mesh mesh = to_mesh(source, c.source);
@@ -206,13 +254,10 @@ int run(const Command_line& c)
   auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
   for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
 
-  const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
   std::string measure_name;
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
-    auto np = DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold))
-                .number_of_iterations(c.iterations)
-                .vertex_is_constrained_map(fixed);
+    auto np = common_parameters(c).vertex_is_constrained_map(fixed);
     // A planar source is compared in its own plane (so its orientation counts), a surface in
     // each triangle's frame.
     return planar ? CGAL::minimize_distortion(mesh, uv, measure, np.vertex_point_map(source_2))
@@ -222,25 +267,94 @@ int run(const Command_line& c)
   DO::IO::Triangle_soup output;
   output.triangles = source.triangles;
   for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
-  DO::IO::write_triangle_soup(c.output, output);
-
-  std::ostringstream json;
-  json << "{\n  \"cells\": " << mesh.number_of_faces() << ",\n  \"vertices\": " << mesh.number_of_vertices()
-       << ",\n  \"measure\": \"" << measure_name << "\",\n  \"initial_energy\": " << json_number(r.initial_energy)
-       << ",\n  \"final_energy\": " << json_number(r.final_energy) << ",\n  \"sweeps\": " << r.iterations
-       << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"inverted_cells\": " << r.inverted_cells
-       << ",\n  \"converged\": " << (r.converged ? "true" : "false") << ",\n  \"energy_per_sweep\": [";
-  for(std::size_t i = 0; i < r.energy_per_iteration.size(); ++i)
-    json << (i ? ", " : "") << json_number(r.energy_per_iteration[i]);
-  json << "]\n}\n";
-  if(!c.report.empty())
-    DO::IO::write_file_atomically(c.report, [&](std::ostream& out) { out << json.str(); });
-
-  std::printf("cells           %zu\nvertices        %zu\nmeasure         %s\ninitial_energy  %.12g\n"
-              "final_energy    %.12g\nsweeps          %zu\nseconds         %.3f\ninverted_cells  %zu\n",
-              std::size_t(mesh.number_of_faces()), std::size_t(mesh.number_of_vertices()), measure_name.c_str(),
-              r.initial_energy, r.final_energy, r.iterations, r.seconds, r.inverted_cells);
+  if(DO::IO::internal::extension(c.output) == "vtu") {
+    auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
+    DO::with_measure(c.measure, [&](const auto& measure) {
+      return planar ? CGAL::compute_distortion(mesh, uv, measure,
+                        DO::parameters::cell_distortion_map(per_face, CGAL::parameters::vertex_point_map(source_2)))
+                    : CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
+    });
+    std::vector<double> values;
+    for(auto f : mesh.faces()) values.push_back(per_face[f]);
+    DO::IO::write_VTU(c.output, output.points, output.triangles, {{measure_name, values}});
+  } else {
+    DO::IO::write_triangle_soup(c.output, output);
+  }
+  report(c, mesh.number_of_faces(), mesh.number_of_vertices(), measure_name, r);
   return 0;
+}
+
+int run_tetrahedra(const Command_line& c)
+{
+  const DO::IO::Tetrahedron_soup source = DO::IO::read_tetrahedron_soup(c.source);
+  DO::IO::Tetrahedron_soup target = source;
+  if(!c.target.empty()) {
+    target = DO::IO::read_tetrahedron_soup(c.target);
+    if(target.points.size() != source.points.size() || target.tetrahedra.size() != source.tetrahedra.size())
+      throw DO::Invalid_input(c.target + ": " + std::to_string(target.points.size()) + " vertices and " +
+                              std::to_string(target.tetrahedra.size()) + " tetrahedra, the source has " +
+                              std::to_string(source.points.size()) + " and " + std::to_string(source.tetrahedra.size()));
+    for(std::size_t t = 0; t < source.tetrahedra.size(); ++t)
+      if(target.tetrahedra[t] != source.tetrahedra[t])
+        throw DO::Invalid_input(c.target + ": tetrahedron " + std::to_string(t) + " differs from the source's (same connectivity needed)");
+  }
+  C3t3 c3t3;
+  const auto handles = DO::c3t3_from_tetrahedra(source.points, source.tetrahedra, c3t3);
+  std::unordered_map<Tr::Vertex_handle, K::Point_3> storage;
+  std::unordered_map<Tr::Vertex_handle, std::size_t> index;
+  for(std::size_t i = 0; i < handles.size(); ++i)
+    if(handles[i] != Tr::Vertex_handle()) {
+      storage[handles[i]] = K::Point_3(target.points[i][0], target.points[i][1], target.points[i][2]);
+      index[handles[i]] = i;
+    }
+  boost::associative_property_map<decltype(storage)> target_map(storage);
+
+  std::vector<unsigned char> listed;
+  if(c.fix != "boundary" && c.fix != "none") listed = read_fixed_vertices(c.fix, source.points.size());
+  auto fixed = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) {
+    return c.fix == "none" ? false : listed[index.at(v)] != 0;
+  });
+
+  std::string measure_name;
+  const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
+    measure_name = measure.name();
+    return c.fix == "boundary" ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(c))
+                               : CGAL::minimize_distortion(c3t3, target_map, measure,
+                                                           common_parameters(c).vertex_is_constrained_map(fixed));
+  });
+
+  DO::IO::Tetrahedron_soup output = source;
+  for(std::size_t i = 0; i < handles.size(); ++i)
+    if(handles[i] != Tr::Vertex_handle()) {
+      const K::Point_3& p = storage.at(handles[i]);
+      output.points[i] = {p.x(), p.y(), p.z()};
+    } else {
+      output.points[i] = target.points[i];
+    }
+  if(DO::IO::internal::extension(c.output) == "vtu") {
+    std::unordered_map<Tr::Cell_handle, double> per_cell;
+    DO::with_measure(c.measure, [&](const auto& measure) {
+      return CGAL::compute_distortion(c3t3, target_map, measure,
+                                      DO::parameters::cell_distortion_map(boost::associative_property_map<decltype(per_cell)>(per_cell)));
+    });
+    std::vector<double> values;
+    for(const auto& t : source.tetrahedra) {
+      Tr::Cell_handle cell;
+      int i0, i1, i2, i3;
+      c3t3.triangulation().is_cell(handles[t[0]], handles[t[1]], handles[t[2]], handles[t[3]], cell, i0, i1, i2, i3);
+      values.push_back(per_cell.at(cell));
+    }
+    DO::IO::write_VTU(c.output, output.points, output.tetrahedra, {{measure_name, values}});
+  } else {
+    DO::IO::write_MEDIT(c.output, output);
+  }
+  report(c, source.tetrahedra.size(), source.points.size(), measure_name, r);
+  return 0;
+}
+
+int run(const Command_line& c)
+{
+  return DO::IO::internal::extension(c.source) == "mesh" ? run_tetrahedra(c) : run_triangles(c);
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
 #include <CGAL/Distortion_optimization/internal/statistics.h>
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 
@@ -18,6 +19,29 @@
 #include <vector>
 
 namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// Evaluates an adapter's map (Triangle_mesh_adapter or C3t3_adapter) with the named parameters'
+// vertex weights, writing per-cell values to the optional cell_distortion_map.
+template <int n, class Adapter, class Measure, class NamedParameters>
+Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np)
+{
+  std::vector<double> omega;
+  auto weights = CGAL::parameters::get_parameter(np, internal_np::vertex_weight_map);
+  if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
+    omega = adapter.vertex_weights(weights);
+  auto cell_map = CGAL::parameters::get_parameter(np, internal_np::cell_distortion_map);
+  constexpr bool wants_cells = !std::is_same<decltype(cell_map), CGAL::internal_np::Param_not_found>::value;
+  std::vector<double> per_cell;
+  const Distortion_statistics stats = evaluate<n>(adapter.map, measure, omega, wants_cells ? &per_cell : nullptr);
+  if constexpr(wants_cells)
+    for(std::size_t c = 0; c < per_cell.size(); ++c) put(cell_map, adapter.cell_of[c], per_cell[c]);
+  return stats;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
 
 /*!
 \ingroup PkgDistortionOptimizationRef
@@ -54,33 +78,38 @@ non-finite coordinates or weights, a degenerate source face, or a non-finite Jac
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
-Distortion_optimization::Distortion_statistics
+std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::value, Distortion_optimization::Distortion_statistics>
 compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measure& measure,
                    const NamedParameters& np = parameters::default_values())
 {
   namespace DO = Distortion_optimization;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::is_default_parameter;
 
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
   const DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
 
-  std::vector<double> omega;
-  auto weights = get_parameter(np, DO::internal_np::vertex_weight_map);
-  if constexpr(!std::is_same<decltype(weights), internal_np::Param_not_found>::value)
-    omega = adapter.vertex_weights(weights);
+  return DO::internal::evaluate_adapted<2>(adapter, measure, np);
+}
 
-  auto cell_map = get_parameter(np, DO::internal_np::cell_distortion_map);
-  constexpr bool wants_cells = !std::is_same<decltype(cell_map), internal_np::Param_not_found>::value;
-  std::vector<double> per_cell;
-  const DO::Distortion_statistics stats =
-    DO::internal::evaluate<2>(adapter.map, measure, omega, wants_cells ? &per_cell : nullptr);
-  if constexpr(wants_cells)
-    for(std::size_t c = 0; c < per_cell.size(); ++c)
-      put(cell_map, adapter.face_of[c], per_cell[c]);
-  return stats;
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Measures the distortion of the simplicial map that sends each vertex `v` of the cells of the
+complex `c3t3` (only the cells in the complex) to `get(target, v)`; as the triangle-mesh overload,
+with `n = 3`, property maps keyed by `Vertex_handle` (weights) and `Cell_handle`
+(`cell_distortion_map`).
+*/
+template <class C3T3, class TargetMap, class Measure,
+          class NamedParameters = parameters::Default_named_parameters>
+std::enable_if_t<Distortion_optimization::internal::Is_c3t3<C3T3>::value, Distortion_optimization::Distortion_statistics>
+compute_distortion(const C3T3& c3t3, const TargetMap& target, const Measure& measure,
+                   const NamedParameters& np = parameters::default_values())
+{
+  namespace DO = Distortion_optimization;
+  const DO::internal::C3t3_adapter<C3T3> adapter(c3t3, target);
+  return DO::internal::evaluate_adapted<3>(adapter, measure, np);
 }
 
 } // namespace CGAL

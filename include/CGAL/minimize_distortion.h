@@ -34,6 +34,9 @@ Options read_options(const NamedParameters& np)
   o.threshold = choose_parameter(get_parameter(np, internal_np::convergence_threshold), o.threshold);
   o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
   o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
+  o.schedule = choose_parameter(get_parameter(np, internal_np::schedule), o.schedule);
+  o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
+                                      o.schedule != Schedule::LOCAL);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
     o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };

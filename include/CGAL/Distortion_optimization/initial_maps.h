@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <cmath>
 #include <string>
 
 namespace CGAL {
@@ -59,7 +60,9 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
 /// \ingroup PkgDistortionOptimizationRef
 /// Writes into `uv` (a vertex property map to `Point_2`) a fixed-border parameterization of the
 /// disk `tm` (a `FaceListGraph` of triangles with one border): the longest border is mapped to a
-/// circle or a square by arc length, the inner vertices by `kind`.
+/// circle or a square by arc length, the inner vertices by `kind`; then the map is scaled about
+/// the origin so that its area is the surface's (isometric measures compare lengths, and CGAL's
+/// parameterizers map to the unit square whatever the surface's size).
 /// \throws Invalid_input if `tm` is empty, has no border, or CGAL's parameterizer fails (e.g. the
 /// mesh is not a topological disk).
 template <class TriangleMesh, class UVMap>
@@ -78,6 +81,22 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind
   };
   if(border == Border_shape::CIRCLE) run(Circle());
   else run(Square());
+
+  double surface_area = 0, uv_area = 0;
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    const auto a = source(h, tm), b = target(h, tm), c = target(next(h, tm), tm);
+    surface_area += std::sqrt(CGAL::to_double(CGAL::squared_area(get(vpm, a), get(vpm, b), get(vpm, c))));
+    uv_area += std::abs(CGAL::to_double(CGAL::area(get(uv, a), get(uv, b), get(uv, c))));
+  }
+  if(!(uv_area > 0) || !(surface_area > 0)) throw Invalid_input("the parameterization has no area");
+  const double s = std::sqrt(surface_area / uv_area);
+  using Point_2 = typename boost::property_traits<UVMap>::value_type;
+  for(auto v : vertices(tm)) {
+    const Point_2 p = get(uv, v);
+    put(uv, v, Point_2(s * CGAL::to_double(p.x()), s * CGAL::to_double(p.y())));
+  }
 }
 
 } // namespace Distortion_optimization

@@ -9,6 +9,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <utility>
@@ -54,6 +55,14 @@ public:
   }
   bool is_normalized() const { return all([](const auto& m) { return m.is_normalized(); }); }
   template <int n> bool is_symmetric() const { return all([](const auto& m) { return m.template is_symmetric<n>(); }); }
+
+  template <int n>
+  double laplacian_weight(const Singular_values<n>& s) const
+  {
+    double w = 1;
+    for(int k : factors_) visit(k, [&](const auto& m) { w = std::max(w, measures_internal::laplacian_weight<n>(m, s)); });
+    return w;
+  }
 
   template <int n>
   double value(const Singular_values<n>& s) const

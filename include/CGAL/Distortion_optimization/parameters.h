@@ -42,7 +42,18 @@ enum class Vertex_order
   SORTED_PER_SWEEP ///< sorted once by distortion at the start of each sweep
 };
 
+/// \ingroup PkgDistortionOptimizationRef
+/// What one iteration of the optimization does.
+enum class Schedule
+{
+  LOCAL,       ///< the paper's Algorithms 1-2: one sweep of local vertex moves
+  GLOBAL,      ///< one preconditioned step that moves all free vertices at once
+  ALTERNATING  ///< a local sweep, then a global step (the default: far fewer iterations)
+};
+
 namespace internal_np {
+enum schedule_t { schedule };
+enum use_harmonic_start_t { use_harmonic_start };
 enum vertex_weight_map_t { vertex_weight_map };
 enum cell_distortion_map_t { cell_distortion_map };
 enum cell_weighting_t { cell_weighting };
@@ -74,6 +85,12 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(convergence_threshold_t, conver
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(local_solver_t, local_solver)
 /// A `Vertex_order`; default `Vertex_order::GREEDY`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
+
+/// A `Schedule`; default `Schedule::ALTERNATING`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(schedule_t, schedule)
+/// `bool`: start from the harmonic map of the fixed vertices when it is valid and better (or from
+/// the best safe point towards it); default `true` except with `Schedule::LOCAL`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(use_harmonic_start_t, use_harmonic_start)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 

@@ -1,8 +1,10 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Algorithm 1: greedy sweeps (Algorithm 2) until the relative energy decrease of a sweep is below
-// the threshold or the number of iterations is reached.
+// Algorithm 1: iterations until the energy decrease of one is below the threshold (relative to
+// the part of the energy above the measure's minimum, when the measure is normalized) or the
+// number of iterations is reached. An iteration is a greedy sweep (Algorithm 2), a global step, or
+// both (see global_step.h), after an optional harmonic start.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H
@@ -10,6 +12,7 @@
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/global_step.h>
 #include <CGAL/Distortion_optimization/internal/greedy_sweep.h>
 #include <CGAL/Distortion_optimization/internal/local_step.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
@@ -18,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace CGAL {
@@ -29,7 +33,9 @@ struct Options
   std::size_t iterations = 100;
   double threshold = 1e-4;
   Local_solver solver = Local_solver::GRADIENT_DESCENT;
-  Vertex_order order = Vertex_order::GREEDY;
+  Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
+  Schedule schedule = Schedule::ALTERNATING;
+  bool harmonic_start = true;
   std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
 };
 
@@ -52,19 +58,30 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   const double normalization = problem.total_weight > 0 ? 1. / problem.total_weight : 0.;
   double energy = step.energy() * normalization;
   result.initial_energy = energy;
+  // A normalized measure is >= its value on rigid maps: measure progress against what is above it.
+  const double floor = measure.is_normalized() ? value_on_rigid_maps<n>(measure) : 0.;
+
+  const bool local = options.schedule != Schedule::GLOBAL, global = options.schedule != Schedule::LOCAL;
+  std::unique_ptr<Global_step<n, Measure>> global_step;
+  if(global) {
+    global_step = std::make_unique<Global_step<n, Measure>>(problem, measure, step);
+    if(options.harmonic_start && global_step->harmonic_start())
+      energy = std::min(energy, step.energy() * normalization);
+  }
   while(result.iterations < options.iterations) {
-    greedy_sweep(step, options.order);
+    if(local) greedy_sweep(step, options.order);
+    if(global) global_step->step();
     ++result.iterations;
     const double previous = energy;
     // Every accepted move decreases the exact energy; a recomputed sum can still exceed the last
-    // one by its own rounding when a sweep gains less than that: keep the smaller.
+    // one by its own rounding when an iteration gains less than that: keep the smaller.
     energy = std::min(previous, step.energy() * normalization);
     result.energy_per_iteration.push_back(energy);
     if(options.visitor && !options.visitor(result.iterations, energy)) {
       result.stopped_by_visitor = true;
       break;
     }
-    if(!(previous - energy > options.threshold * std::abs(previous))) {
+    if(!(previous - energy > options.threshold * std::abs(previous - floor))) {
       result.converged = true;
       break;
     }

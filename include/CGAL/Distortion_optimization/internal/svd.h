@@ -85,12 +85,12 @@ inline Vector<3> any_unit_orthogonal(const Vector<3>& u)
   return u.cross(a).normalized();
 }
 
-// Rotates columns i and j of B (and V) to make them orthogonal; returns false if they already were.
-inline bool jacobi_rotation(Matrix<3>& B, Matrix<3>& V, int i, int j)
+// Rotates columns i and j of B (and V) to make them orthogonal; returns their squared cosine before.
+inline double jacobi_rotation(Matrix<3>& B, Matrix<3>& V, int i, int j)
 {
   const double alpha = B.col(i).squaredNorm(), beta = B.col(j).squaredNorm(), gamma = B.col(i).dot(B.col(j));
-  if(!(std::abs(gamma) > 1e-16 * std::sqrt(alpha * beta)))
-    return false;
+  const double cosine2 = gamma * gamma / (alpha * beta);
+  if(!(cosine2 > 1e-32)) return 0;
   const double zeta = (beta - alpha) / (2 * gamma);
   const double t = (zeta >= 0 ? 1. : -1.) / (std::abs(zeta) + std::sqrt(1 + zeta * zeta));
   const double c = 1 / std::sqrt(1 + t * t), s = c * t;
@@ -99,7 +99,7 @@ inline bool jacobi_rotation(Matrix<3>& B, Matrix<3>& V, int i, int j)
     M->col(i) = c * a - s * b;
     M->col(j) = s * a + c * b;
   }
-  return true;
+  return cosine2;
 }
 
 inline bool signed_svd(const Matrix<3>& J, Signed_svd<3>& out)
@@ -116,11 +116,13 @@ inline bool signed_svd(const Matrix<3>& J, Signed_svd<3>& out)
   V.col(1) = (es.eigenvectors().col(1) - V.col(0).dot(es.eigenvectors().col(1)) * V.col(0)).normalized();
   V.col(2) = V.col(0).cross(V.col(1));
   Matrix<3> B = J * V;
+  // Jacobi converges quadratically: after a sweep whose largest cosine was below 1e-8, the next
+  // one would only change the columns at the 1e-16 level.
   for(int sweep = 0; sweep < 3; ++sweep) {
-    bool rotated = jacobi_rotation(B, V, 0, 1);
-    rotated = jacobi_rotation(B, V, 0, 2) || rotated;
-    rotated = jacobi_rotation(B, V, 1, 2) || rotated;
-    if(!rotated) break;
+    double largest = jacobi_rotation(B, V, 0, 1);
+    largest = std::max(largest, jacobi_rotation(B, V, 0, 2));
+    largest = std::max(largest, jacobi_rotation(B, V, 1, 2));
+    if(!(largest > 1e-16)) break;
   }
   // Sort the columns by decreasing norm, then make V a rotation (the sign goes to sigma_3 below).
   Vector<3> norms = B.colwise().squaredNorm().transpose();

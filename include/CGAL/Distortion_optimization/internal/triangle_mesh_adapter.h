@@ -40,7 +40,7 @@ public:
 
   Simplicial_map<2> map;
   std::vector<vertex_descriptor> vertex_of;  // vertex index -> vertex
-  std::vector<face_descriptor> face_of;      // cell index -> face
+  std::vector<face_descriptor> cell_of;      // cell index -> face
 
   template <class TargetMap>
   Triangle_mesh_adapter(const TriangleMesh& tm, VertexPointMap vpm, const TargetMap& target)
@@ -61,7 +61,7 @@ public:
       vertex_of.push_back(v);
     }
     for(face_descriptor f : faces(tm)) {
-      const std::size_t c = face_of.size();
+      const std::size_t c = cell_of.size();
       if(degree(f, tm) != 3)
         throw Invalid_input("face " + std::to_string(c) + " is not a triangle");
       typename Simplicial_map<2>::Cell cell;
@@ -73,7 +73,7 @@ public:
       if(CGAL::collinear(p, q, r))
         throw Invalid_input("source face " + std::to_string(c) + " is degenerate (zero area)");
       map.add_cell(cell, rest_edges(p, q, r));
-      face_of.push_back(f);
+      cell_of.push_back(f);
     }
   }
 

@@ -1,0 +1,97 @@
+// The paper's Table 1: conformal optimization of the radial map f0(x) = x|x| of the cube [-1,1]^3
+// (boundary fixed, K, threshold 1e-4) at about 0.8K, 6K, 50K and 400K tetrahedra (TetGen), one
+// thread, with the default schedule (local sweeps alternated with global steps, harmonic start)
+// and with the paper's local-only schedule (Algorithms 1-2).
+//
+//   build/benchmark/Distortion_optimization/bench_table1 [largest number of tets, default 400000]
+
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
+#include <CGAL/Distortion_optimization/tetrahedralize_with_tetgen.h>
+#include <CGAL/Distortion_optimization/volume_maps.h>
+#include <CGAL/compute_distortion.h>
+#include <CGAL/minimize_distortion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <unordered_map>
+
+namespace DO = CGAL::Distortion_optimization;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Tr = CGAL::Mesh_triangulation_3<CGAL::Labeled_mesh_domain_3<K>>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+using Storage = std::unordered_map<Tr::Vertex_handle, K::Point_3>;
+using Target = boost::associative_property_map<Storage>;
+
+namespace {
+
+// Peak resident memory of the process so far, in MiB (Linux).
+double peak_memory_mib()
+{
+  std::ifstream status("/proc/self/status");
+  for(std::string line; std::getline(status, line);)
+    if(line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024;
+  return 0;
+}
+
+void cube(double max_volume, std::vector<std::array<double, 3>>& points, std::vector<std::array<std::size_t, 4>>& tets)
+{
+  std::vector<std::array<double, 3>> corners;
+  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
+  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  DO::tetrahedralize_with_tetgen(corners, faces, max_volume, points, tets);
+}
+
+K::Point_3 radial(const K::Point_3& p)
+{
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z());
+  return K::Point_3(r * p.x(), r * p.y(), r * p.z());
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const double largest = argc > 1 ? std::stod(argv[1]) : 400000;
+  const double sizes[] = {800, 6000, 50000, 400000};
+  const double paper[] = {0.2, 11.2, 107, -1};
+  std::printf("%8s %-12s %9s %6s %10s %10s %10s %10s %9s %9s %8s\n", "tets", "schedule", "seconds", "iters",
+              "K before", "K after", "cond bef.", "cond aft.", "inverted", "paper s", "MiB");
+  for(int s = 0; s < 4 && sizes[s] <= largest; ++s) {
+    // TetGen's count for a volume bound is roughly proportional to 1/bound: one correction.
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<std::size_t, 4>> tets;
+    double bound = 8. / sizes[s] * 1.5;
+    cube(bound, points, tets);
+    bound *= tets.size() / sizes[s];
+    cube(bound, points, tets);
+
+    for(auto schedule : {DO::Schedule::ALTERNATING, DO::Schedule::LOCAL}) {
+      if(schedule == DO::Schedule::LOCAL && sizes[s] > 60000) continue;   // minutes: see the 50K row
+      C3t3 c3t3;
+      DO::c3t3_from_tetrahedra(points, tets, c3t3);
+      Storage storage;
+      DO::map_vertices(c3t3, Target(storage), radial);
+      const auto condition_before = CGAL::compute_distortion(c3t3, Target(storage), DO::Condition_number());
+      const DO::Result r = CGAL::minimize_distortion(c3t3, Target(storage), DO::Conformal_dilatation(),
+                                                     DO::parameters::schedule(schedule).number_of_iterations(1000));
+      const auto k = CGAL::compute_distortion(c3t3, Target(storage), DO::Conformal_dilatation());
+      const auto condition = CGAL::compute_distortion(c3t3, Target(storage), DO::Condition_number());
+      std::printf("%8zu %-12s %9.3f %6zu %10.5f %10.5f %10.5f %10.5f %9zu %9s %8.0f\n", tets.size(),
+                  schedule == DO::Schedule::LOCAL ? "local" : "alternating", r.seconds, r.iterations, r.initial_energy,
+                  k.mean_volume, condition_before.mean_volume, condition.mean_volume, k.inverted_cells,
+                  paper[s] > 0 ? std::to_string(paper[s]).substr(0, 5).c_str() : "-", peak_memory_mib());
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}

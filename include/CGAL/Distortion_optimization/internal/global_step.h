@@ -1,0 +1,266 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Beyond the paper: steps that move all free vertices at once, alternated with the local sweeps
+// (which carry information across a mesh only one ring per sweep).
+//  - The harmonic start: the Dirichlet minimizer for the fixed vertices, taken if it is valid and
+//    better, else approached by a line search within the exact largest safe step.
+//  - The global step d = -P^-1 g, with P the volume-weighted cotangent Laplacian of the source
+//    reweighted per cell by a factor of the cell's smallest singular value (the measure's
+//    `laplacian_weight`, in the spirit of the reweighted proxies of SLIM, Rabinovich et al. 2017),
+//    solved by warm-started Jacobi-preconditioned CG to a loose tolerance. The step is capped at
+//    0.9 times the exact largest step before a cell degenerates (per cell, det(Ds + t dDs) is a
+//    quadratic in 2D, a cubic in 3D: its smallest positive root), then backtracks (Armijo), and is
+//    accepted only if CGAL's exact orientation predicate sees no flipped cell.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
+
+#include <CGAL/Distortion_optimization/internal/cofactor.h>
+#include <CGAL/Distortion_optimization/internal/laplacian.h>
+#include <CGAL/Distortion_optimization/internal/local_step.h>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// The smallest positive root of c0 + c1 t + c2 t^2 + c3 t^3 when c0 > 0 (+inf if none): the first
+// t at which a cell's signed volume reaches 0. Roots are bracketed between the critical points and
+// refined by bisection, which is robust to the cancellations of closed formulas.
+inline double first_positive_root(double c0, double c1, double c2, double c3)
+{
+  auto p = [&](double t) { return c0 + t * (c1 + t * (c2 + t * c3)); };
+  std::vector<double> stops;
+  // Critical points: roots of c1 + 2 c2 t + 3 c3 t^2.
+  const double a = 3 * c3, b = 2 * c2, c = c1;
+  if(a != 0) {
+    const double disc = b * b - 4 * a * c;
+    if(disc >= 0) {
+      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+      if(q != 0) stops.push_back(c / q);
+      stops.push_back(q / a);
+    }
+  } else if(b != 0) {
+    stops.push_back(-c / b);
+  }
+  std::sort(stops.begin(), stops.end());
+  double left = 0;
+  auto bisect = [&](double lo, double hi) {
+    for(int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (p(mid) > 0 ? lo : hi) = mid;
+    }
+    return lo;   // the side where the volume is still positive
+  };
+  for(double s : stops) {
+    if(!(s > left)) continue;
+    if(p(s) <= 0) return bisect(left, s);
+    left = s;
+  }
+  // Beyond the last critical point p is monotone: it has a root iff it heads down.
+  const double leading = c3 != 0 ? c3 : c2 != 0 ? c2 : c1;
+  if(!(leading < 0)) return std::numeric_limits<double>::infinity();
+  double hi = std::max(1., 2 * left);
+  while(p(hi) > 0 && hi < 1e300) hi *= 2;
+  return p(hi) > 0 ? std::numeric_limits<double>::infinity() : bisect(left, hi);
+}
+
+template <int n, class Measure>
+class Global_step
+{
+  using Vec = Vector<n>;
+
+public:
+  Global_step(Optimization_problem<n>& problem, const Measure& measure, Local_step<n, Measure>& local)
+    : p_(problem), measure_(measure), local_(local)
+  {
+    const std::size_t nv = p_.number_of_vertices();
+    free_index_.assign(nv, -1);
+    for(std::size_t v = 0; v < nv; ++v)
+      if(p_.is_free[v]) free_index_[v] = free_count_++;
+    for(std::size_t c = 0; c < p_.map.number_of_cells(); ++c) {
+      bool moves = false;
+      for(auto v : p_.map.cells[c]) moves = moves || p_.is_free[v];
+      if(moves) moving_cells_.push_back(static_cast<std::uint32_t>(c));
+    }
+    build_pattern();
+    previous_solution_ = Eigen::MatrixXd::Zero(free_count_, n);
+  }
+
+  bool has_free_vertices() const { return free_count_ > 0; }
+
+  // The harmonic start (see the file comment). Returns true if the map changed.
+  bool harmonic_start()
+  {
+    if(free_count_ == 0) return false;
+    const std::vector<Vec> harmonic = harmonic_targets(p_.map, p_.is_free);
+    std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
+    for(std::size_t v = 0; v < direction.size(); ++v)
+      if(p_.is_free[v]) direction[v] = harmonic[v] - p_.map.target[v];
+    const double t_max = max_step(direction);
+    // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
+    // energy drops.
+    double t = t_max > 1 ? 1. : 0.9 * t_max;
+    return line_search(direction, t, 0.);
+  }
+
+  // One preconditioned global step. Returns true if the map changed.
+  bool step()
+  {
+    if(free_count_ == 0) return false;
+    Eigen::MatrixXd g = Eigen::MatrixXd::Zero(free_count_, n);
+    refill(g);
+    solver_.setMaxIterations(30);
+    solver_.setTolerance(1e-2);
+    solver_.compute(P_);
+    Eigen::MatrixXd x(free_count_, n);
+    for(int d = 0; d < n; ++d) x.col(d) = solver_.solveWithGuess(-g.col(d), previous_solution_.col(d));
+    if(!x.allFinite()) return false;
+    previous_solution_ = x;
+    double slope = 0;
+    for(int d = 0; d < n; ++d) slope += g.col(d).dot(x.col(d));
+    if(!(slope < 0)) return false;   // P is positive definite, so only a failed solve gets here
+    std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
+    for(std::size_t v = 0; v < direction.size(); ++v)
+      if(free_index_[v] >= 0) direction[v] = x.row(free_index_[v]).transpose();
+    const double t_max = max_step(direction);
+    double t = std::min(last_t_ > 0 ? 2 * last_t_ : 1., 0.9 * t_max);
+    const bool moved = line_search(direction, t, slope);
+    if(moved) last_t_ = t;
+    return moved;
+  }
+
+private:
+  // The sparsity pattern of the free-free block of the Laplacian, and for each cell and pair of
+  // its free vertices the slot of their entry, so that reweighting only rewrites values.
+  void build_pattern()
+  {
+    std::vector<Eigen::Triplet<double>> entries;
+    for(std::uint32_t c : moving_cells_)
+      for(auto a : p_.map.cells[c])
+        for(auto b : p_.map.cells[c])
+          if(free_index_[a] >= 0 && free_index_[b] >= 0) entries.emplace_back(free_index_[a], free_index_[b], 0.);
+    P_.resize(free_count_, free_count_);
+    P_.setFromTriplets(entries.begin(), entries.end());
+    P_.makeCompressed();
+    slots_.clear();
+    for(std::uint32_t c : moving_cells_)
+      for(auto a : p_.map.cells[c])
+        for(auto b : p_.map.cells[c]) {
+          if(free_index_[a] < 0 || free_index_[b] < 0) { slots_.push_back(-1); continue; }
+          const int column = free_index_[b], row = free_index_[a];
+          const int* begin = P_.innerIndexPtr() + P_.outerIndexPtr()[column];
+          const int* end = P_.innerIndexPtr() + P_.outerIndexPtr()[column + 1];
+          slots_.push_back(static_cast<int>(std::lower_bound(begin, end, row) - P_.innerIndexPtr()));
+        }
+  }
+
+  // Refills P with the reweighted cell stiffnesses and accumulates the energy gradient g.
+  void refill(Eigen::MatrixXd& g)
+  {
+    std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
+    std::array<Vec, n + 1> cell_gradient;
+    std::size_t k = 0;
+    for(std::uint32_t c : moving_cells_) {
+      const double w = p_.cell_weight[c];
+      cell_distortion<n>(measure_, p_.map, c, cell_gradient);
+      const auto& cell = p_.map.cells[c];
+      for(int i = 0; i <= n; ++i)
+        if(free_index_[cell[i]] >= 0 && cell_gradient[i].allFinite())
+          g.row(free_index_[cell[i]]) += w * cell_gradient[i].transpose();
+      double factor = 1;
+      if constexpr(measures_internal::Has_laplacian_weight<Measure, n>::value)
+        factor = measures_internal::laplacian_weight<n>(measure_, signed_singular_values(p_.map.jacobian(c)));
+      Eigen::Matrix<double, n, n + 1> G;   // hat-function gradients, as in cotangent_laplacian()
+      G.template rightCols<n>() = p_.map.inverse_rest[c].transpose();
+      G.col(0) = -G.template rightCols<n>().rowwise().sum();
+      const Eigen::Matrix<double, n + 1, n + 1> K = (w * factor) * (G.transpose() * G);
+      for(int a = 0; a <= n; ++a)
+        for(int b = 0; b <= n; ++b, ++k)
+          if(slots_[k] >= 0) P_.valuePtr()[slots_[k]] += K(a, b);
+    }
+  }
+
+  // The exact largest t such that no valid cell degenerates at X + t D.
+  double max_step(const std::vector<Vec>& direction) const
+  {
+    double t_max = std::numeric_limits<double>::infinity();
+    for(std::uint32_t c : moving_cells_) {
+      if(!local_.cell_ok[c]) continue;
+      const auto& cell = p_.map.cells[c];
+      Matrix<n> A = p_.map.target_edges(c), B;
+      for(int i = 0; i < n; ++i) B.col(i) = direction[cell[i + 1]] - direction[cell[0]];
+      const double sign = p_.map.rest_sign[c];
+      const Cofactor_and_determinant<n> a(A), b(B);
+      const double c0 = sign * a.det, c1 = sign * (a.cofactor.array() * B.array()).sum();
+      double c2, c3 = 0;
+      if constexpr(n == 2) c2 = sign * b.det;
+      else { c2 = sign * (b.cofactor.array() * A.array()).sum(); c3 = sign * b.det; }
+      if(c0 > 0) t_max = std::min(t_max, first_positive_root(c0, c1, c2, c3));
+    }
+    return t_max;
+  }
+
+  // Backtracks from t along D until the energy decreases (Armijo with the given slope, or any
+  // decrease above rounding if slope is 0) with no valid cell flipped; then commits.
+  bool line_search(const std::vector<Vec>& direction, double& t, double slope)
+  {
+    std::vector<Vec>& x = p_.map.target;
+    const std::vector<Vec> x0 = x;
+    const double e0 = local_.energy();
+    trial_.resize(moving_cells_.size());
+    for(int k = 0; k < 30 && t > 0; ++k, t *= 0.5) {
+      for(std::size_t v = 0; v < x.size(); ++v)
+        if(p_.is_free[v]) x[v] = x0[v] + t * direction[v];
+      double e = e0;
+      for(std::size_t i = 0; i < moving_cells_.size(); ++i) {
+        const std::uint32_t c = moving_cells_[i];
+        trial_[i] = cell_distortion<n>(measure_, p_.map.jacobian(c));
+        e += p_.cell_weight[c] * (trial_[i] - local_.cell_value[c]);
+      }
+      if(!(e <= e0 + 1e-4 * t * slope) || !(e0 - e > 64 * std::numeric_limits<double>::epsilon() * std::abs(e0)))
+        continue;
+      bool flips = false;
+      for(std::size_t i = 0; i < moving_cells_.size() && !flips; ++i)
+        flips = local_.cell_ok[moving_cells_[i]] && is_inverted(p_.map, moving_cells_[i]);
+      if(flips) continue;
+      for(std::size_t i = 0; i < moving_cells_.size(); ++i) {
+        const std::uint32_t c = moving_cells_[i];
+        local_.cell_value[c] = trial_[i];
+        if(!local_.cell_ok[c]) local_.cell_ok[c] = !is_inverted(p_.map, c);
+      }
+      return true;
+    }
+    x = x0;
+    return false;
+  }
+
+  Optimization_problem<n>& p_;
+  const Measure& measure_;
+  Local_step<n, Measure>& local_;
+  std::vector<int> free_index_;
+  int free_count_ = 0;
+  std::vector<std::uint32_t> moving_cells_;
+  Eigen::SparseMatrix<double> P_;
+  std::vector<int> slots_;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver_;
+  Eigen::MatrixXd previous_solution_;
+  std::vector<double> trial_;
+  double last_t_ = 0;
+};
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
