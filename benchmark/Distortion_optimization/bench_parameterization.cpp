@@ -10,7 +10,8 @@
 //
 // Every map is scored by the same code: CGAL::compute_distortion() volume-weighted means of SD,
 // K and ARAP, and the number of inverted triangles. SD and ARAP depend on the scale of the map:
-// ARAP's map has about the size of the surface, the Tutte map lies in the unit disk. So "SD*" is
+// ARAP's map has about the size of the surface, so has the Tutte map (scaled to the surface's area,
+// but on a fixed circle). So "SD*" is
 // also reported: SD after the uniform rescale s of the map that minimizes it (golden-section
 // search on log s), the fair comparison between maps of different sizes.
 // The seconds are those of the step named in the row (the Tutte start is its own row).

@@ -59,8 +59,9 @@ const char* usage =
   "               volume, dirichlet, or a product such as conformal*isometric\n"
   "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
   "               one 0-based vertex index per line\n"
-  "  --iterations largest number of sweeps (default 100)\n"
-  "  --threshold  stop when a sweep lowers the energy by less than this fraction (default 1e-4)\n"
+  "  --iterations largest number of iterations, each a local sweep and a global step (default 100)\n"
+  "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
+  "               energy above the measure's minimum (default 1e-4)\n"
   "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
   "  --threads    number of threads (default 1; the optimizer runs on one thread for now)\n"
   "  --report     also write the results as JSON\n";
@@ -118,6 +119,8 @@ Command_line parse(int argc, char** argv)
   if(in == "mesh" ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
     throw Usage_error(in == "mesh" ? "--output must end in .mesh or .vtu for a tetrahedral source"
                                    : "--output must end in .off, .obj or .vtu");
+  if(in == "mesh" && c.target.empty())
+    throw Usage_error("a .mesh source needs --target (the start map)");
   if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
     throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
   return c;

@@ -75,8 +75,8 @@ int main(int argc, char* argv[])
   }
 
   // Improve a copy of the Tutte map for each measure. Energies are volume-weighted means.
-  // K is blind to scale; C and the symmetric Dirichlet energy are not, and the Tutte circle has
-  // diameter 1 whatever the size of the surface, so their values include that scale mismatch.
+  // K is blind to scale; C and the symmetric Dirichlet energy are not: the Tutte map is scaled to
+  // the surface's area, but with the border fixed on a circle its shape still costs isometry.
   std::printf("%-22s %12s %12s %7s %9s %9s\n", "measure", "Tutte", "improved", "sweeps", "seconds", "inverted");
   auto improve = [&](const auto& measure) {
     for(vertex_descriptor v : mesh.vertices())

@@ -107,10 +107,15 @@ flattened (checked with exact predicates); the energy never increases.
     default `AVERAGE_VOLUME`
   - `CGAL::parameters::number_of_iterations`: the largest number of sweeps; default 100
   - `Distortion_optimization::parameters::convergence_threshold`: stop when a sweep decreases
-    the energy by less than this fraction; default 1e-4
+    fraction of the energy above the measure's minimum (normalized measures) or of the energy;
+    default 1e-4
   - `Distortion_optimization::parameters::local_solver`: `GRADIENT_DESCENT` (default) or `BFGS`
-  - `Distortion_optimization::parameters::vertex_order`: `GREEDY` (default, the paper's) or
-    `SORTED_PER_SWEEP`
+  - `Distortion_optimization::parameters::vertex_order`: `SORTED_PER_SWEEP` (default) or `GREEDY`
+    (the paper's live priority queue)
+  - `Distortion_optimization::parameters::schedule`: what an iteration does: `LOCAL` (the paper's
+    sweep), `GLOBAL` (one preconditioned step of all free vertices) or `ALTERNATING` (default: both)
+  - `Distortion_optimization::parameters::use_harmonic_start`: start from the harmonic map of the
+    fixed vertices, or from the best safe point towards it; default `true` except with `LOCAL`
   - `CGAL::parameters::visitor`: a callable `bool(std::size_t iteration, double energy)` called
     after each sweep; returning `false` stops the run with the map of that sweep
 
@@ -118,7 +123,8 @@ flattened (checked with exact predicates); the energy never increases.
 
 \throws Distortion_optimization::Invalid_input for the input `compute_distortion()` rejects,
 non-positive vertex weights, and, when the measure is infinite on inverted cells (normalized), a
-start map with an inverted or flat triangle (the message names it).
+start map with an inverted or flat triangle (the message names it), and a harmonic start whose
+Laplacian system is singular (a free component without a fixed vertex; use `use_harmonic_start(false)`).
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
@@ -157,6 +163,9 @@ Same method, guarantees and result as the triangle-mesh overload (`n = 3`): no t
 positive in the start map is ever inverted or flattened (exact predicates).
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\param c3t3 the source complex (not modified)
+\param target the start map on input, the optimized map on output (free complex vertices only)
+\param measure the distortion measure D
 \tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a
         `Point_3`, e.g. `boost::associative_property_map<std::unordered_map<Vertex_handle, Point_3>>`
 \param np the named parameters of the triangle-mesh overload, with vertex maps keyed by

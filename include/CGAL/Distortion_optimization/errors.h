@@ -14,7 +14,8 @@ namespace Distortion_optimization {
 /// Thrown by every function of the package for input it cannot accept: empty or non-triangular
 /// meshes, sizes that differ, non-finite coordinates, degenerate source cells, inverted cells in a
 /// start map under a normalized measure, unreadable files, ... The message names the offending
-/// element (vertex or cell index, file and line). Inputs are left unmodified when it is thrown.
+/// element (vertex or cell index, file and line). compute_distortion() and minimize_distortion() leave their inputs (and the target map) unmodified
+/// when they throw.
 class Invalid_input : public std::invalid_argument
 {
 public:

@@ -3,7 +3,7 @@
 //
 // Start maps for surface parametrization, from CGAL's Surface_mesh_parameterization package, so
 // that "parameterize, then improve" is two calls:
-//   CGAL::Distortion_optimization::tutte_parameterization(mesh, uv);
+//   CGAL::Distortion_optimization::initial_parameterization(mesh, uv);
 //   CGAL::minimize_distortion(mesh, uv, CGAL::Distortion_optimization::Symmetric_dirichlet());
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H

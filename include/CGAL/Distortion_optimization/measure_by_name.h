@@ -59,7 +59,8 @@ public:
   template <int n>
   double laplacian_weight(const Singular_values<n>& s) const
   {
-    double w = 1;
+    // The largest factor's weight, as Product does.
+    double w = 0;
     for(int k : factors_) visit(k, [&](const auto& m) { w = std::max(w, measures_internal::laplacian_weight<n>(m, s)); });
     return w;
   }

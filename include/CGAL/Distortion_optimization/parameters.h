@@ -79,17 +79,20 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_distortion_map_t, cell_dis
 /// A `Cell_weighting`; default `Cell_weighting::AVERAGE_VOLUME`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_weighting_t, cell_weighting)
 
-/// Stop when the relative energy decrease of an iteration is below this; default 1e-4.
+/// Stop when an iteration decreases the energy by less than this fraction of the energy above the
+/// measure's minimum (of the energy itself for a measure that is not normalized); default 1e-4.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(convergence_threshold_t, convergence_threshold)
 /// A `Local_solver`; default `Local_solver::GRADIENT_DESCENT`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(local_solver_t, local_solver)
-/// A `Vertex_order`; default `Vertex_order::GREEDY`.
+/// A `Vertex_order`; default `Vertex_order::SORTED_PER_SWEEP` (same energies as the paper's
+/// `GREEDY` order at about 1.7x less time on the package's parametrization benchmark).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
 
 /// A `Schedule`; default `Schedule::ALTERNATING`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(schedule_t, schedule)
 /// `bool`: start from the harmonic map of the fixed vertices when it is valid and better (or from
-/// the best safe point towards it); default `true` except with `Schedule::LOCAL`.
+/// the best safe point towards it); default `true`, except with `Schedule::LOCAL` (the paper's
+/// schedule, which starts from the given map).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(use_harmonic_start_t, use_harmonic_start)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER

@@ -25,7 +25,7 @@ namespace Distortion_optimization {
 
 /// \ingroup PkgDistortionOptimizationRef
 /// Tetrahedralizes the inside of a closed triangle surface given as points and triangles: a
-/// constrained Delaunay quality mesh (TetGen switches `pq<ratio>a<volume>`) whose tetrahedra have
+/// constrained Delaunay quality mesh (TetGen switches `pzQq<ratio>a<volume>`: PLC, zero-based, quiet, quality, volume bound) whose tetrahedra have
 /// at most `max_volume`. Output tetrahedra are positively oriented; input points come first.
 /// \throws Invalid_input if TetGen fails (self-intersecting or open input, ...).
 inline void tetrahedralize_with_tetgen(const std::vector<std::array<double, 3>>& surface_points,

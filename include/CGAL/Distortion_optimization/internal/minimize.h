@@ -35,7 +35,7 @@ struct Options
   Local_solver solver = Local_solver::GRADIENT_DESCENT;
   Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
   Schedule schedule = Schedule::ALTERNATING;
-  bool harmonic_start = true;
+  bool harmonic_start = true;   // false by default with Schedule::LOCAL (read_options)
   std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
 };
 
@@ -63,7 +63,7 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
 
   const bool local = options.schedule != Schedule::GLOBAL, global = options.schedule != Schedule::LOCAL;
   std::unique_ptr<Global_step<n, Measure>> global_step;
-  if(global) {
+  if(global || options.harmonic_start) {
     global_step = std::make_unique<Global_step<n, Measure>>(problem, measure, step);
     if(options.harmonic_start && global_step->harmonic_start())
       energy = std::min(energy, step.energy() * normalization);
