@@ -55,6 +55,22 @@ namespace measures_internal {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
+// x^k for a small constant k (std::pow with a double exponent is many times slower).
+template <int k>
+double power(double x)
+{
+  if constexpr(k == 0) return 1.;
+  else return x * power<k - 1>(x);
+}
+
+// (s_1 ... s_n)^(2/n), the scale of MIPS.
+template <int n>
+double mean_square_scale(double product)
+{
+  if constexpr(n == 2) return product;
+  else return std::cbrt(product * product);
+}
+
 template <int n>
 Singular_values<n> nan_gradient()
 {
@@ -105,7 +121,7 @@ double conformal_weight(const Singular_values<n>& s)
 template <int n>
 double isometric_weight(const Singular_values<n>& s)
 {
-  return s[n - 1] > 0 ? (1. + 3. / std::pow(s[n - 1], 4)) / 4 : 1.;
+  return s[n - 1] > 0 ? (1. + 3. / power<4>(s[n - 1])) / 4 : 1.;
 }
 
 } // namespace measures_internal
@@ -126,14 +142,14 @@ struct Conformal_dilatation
   {
     if(!(s[n - 1] > 0)) return measures_internal::infinity;
     const double p = s.prod();
-    return std::max(p / std::pow(s[n - 1], n), std::pow(s[0], n) / p);
+    return std::max(p / measures_internal::power<n>(s[n - 1]), measures_internal::power<n>(s[0]) / p);
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
   {
     if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
     const double p = s.prod();
-    const double inner = p / std::pow(s[n - 1], n), outer = std::pow(s[0], n) / p;
+    const double inner = p / measures_internal::power<n>(s[n - 1]), outer = measures_internal::power<n>(s[0]) / p;
     Singular_values<n> g;
     if(inner >= outer) {   // d(prod/s_n^n)/ds_i = K_I/s_i, and (1-n) K_I/s_n for i = n
       g = inner * s.cwiseInverse();
@@ -188,13 +204,13 @@ struct MIPS
   double value(const Singular_values<n>& s) const
   {
     if(!(s[n - 1] > 0)) return measures_internal::infinity;
-    return s.squaredNorm() / std::pow(s.prod(), 2. / n);
+    return s.squaredNorm() / measures_internal::mean_square_scale<n>(s.prod());
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
   {
     if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
-    const double scale = std::pow(s.prod(), 2. / n), v = s.squaredNorm() / scale;
+    const double scale = measures_internal::mean_square_scale<n>(s.prod()), v = s.squaredNorm() / scale;
     return (2. / scale) * s - (2. / n) * v * s.cwiseInverse();
   }
   template <int n>
@@ -202,7 +218,7 @@ struct MIPS
   {
     measures_internal::Invariants<n> I(J);
     if(!(I.det > 0)) return measures_internal::infinity;
-    const double scale = n == 2 ? I.det : std::cbrt(I.det * I.det), v = I.norm2 / scale;
+    const double scale = measures_internal::mean_square_scale<n>(I.det), v = I.norm2 / scale;
     if(dJ) *dJ = (2. / scale) * J - (2. / n) * (v / I.det) * I.cofactor;
     return v;
   }

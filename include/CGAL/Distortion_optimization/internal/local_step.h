@@ -36,7 +36,7 @@ class Local_step
 public:
   using Vec = Vector<n>;
   static constexpr double armijo = 1e-4;
-  static constexpr double safety = 0.9;   // fraction of the exact largest step tried first
+  static constexpr double safety = 0.5;   // fraction of the exact largest step tried first (0.9 backtracks more)
   static constexpr int max_backtracks = 40;
   static constexpr double rounding = 64 * std::numeric_limits<double>::epsilon();
 
