@@ -2,6 +2,7 @@
 //
 //   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
 //                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
+//                        [--schedule alternating|local|global]
 //
 // S, T, O: OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same vertices
 // and cells in the same order; a planar target has z = 0. Without --target, a disk-topology
@@ -50,7 +51,7 @@ namespace {
 const char* usage =
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
-  "         [--threads N] [--report R.json]\n"
+  "         [--threads N] [--report R.json] [--schedule alternating|local|global]\n"
   "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
   "               vertices and cells in the same order; a planar target has z = 0; without\n"
   "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
@@ -64,7 +65,9 @@ const char* usage =
   "               energy above the measure's minimum (default 1e-4)\n"
   "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
   "  --threads    number of threads (default 1; the optimizer runs on one thread for now)\n"
-  "  --report     also write the results as JSON\n";
+  "  --report     also write the results as JSON\n"
+  "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
+  "               harmonic start), local (the paper's sweeps only) or global\n";
 
 struct Usage_error : std::runtime_error
 {
@@ -73,7 +76,8 @@ struct Usage_error : std::runtime_error
 
 struct Command_line
 {
-  std::string source, target, output, measure = "conformal", fix = "boundary", solver = "gd", report;
+  std::string source, target, output, measure = "conformal", fix = "boundary", solver = "gd", report,
+    schedule = "alternating";
   std::size_t iterations = 100, threads = 1;
   double threshold = 1e-4;
 };
@@ -105,6 +109,7 @@ Command_line parse(int argc, char** argv)
     else if(option == "--fix") c.fix = value;
     else if(option == "--solver") c.solver = value;
     else if(option == "--report") c.report = value;
+    else if(option == "--schedule") c.schedule = value;
     else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
     else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
     else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
@@ -114,6 +119,8 @@ Command_line parse(int argc, char** argv)
   if(c.output.empty()) throw Usage_error("--output is required");
   if(c.solver != "gd" && c.solver != "bfgs") throw Usage_error("--solver is gd or bfgs, not '" + c.solver + "'");
   if(c.threads == 0) throw Usage_error("--threads must be at least 1");
+  if(c.schedule != "alternating" && c.schedule != "local" && c.schedule != "global")
+    throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
   if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
   const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
   if(in == "mesh" ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
@@ -185,7 +192,9 @@ std::vector<unsigned char> read_fixed_vertices(const std::string& path, std::siz
 auto common_parameters(const Command_line& c)
 {
   const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
-  return DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold))
+  const auto schedule = c.schedule == "local" ? DO::Schedule::LOCAL
+                      : c.schedule == "global" ? DO::Schedule::GLOBAL : DO::Schedule::ALTERNATING;
+  return DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold)))
     .number_of_iterations(c.iterations);
 }
 

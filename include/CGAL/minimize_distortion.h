@@ -50,12 +50,12 @@ Options read_options(const NamedParameters& np)
 // minimizes, and returns the problem so that the caller writes its targets back.
 template <int n, class Adapter, class Measure, class NamedParameters, class DefaultFixed>
 std::pair<Result, Optimization_problem<n>>
-minimize_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np, DefaultFixed default_fixed)
+minimize_adapted(Adapter& adapter, const Measure& measure, const NamedParameters& np, DefaultFixed default_fixed)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Optimization_problem<n> problem;
-  problem.map = adapter.map;
+  problem.map = std::move(adapter.map);   // the adapter keeps only its vertex and cell handles
   auto weights = get_parameter(np, internal_np::vertex_weight_map);
   if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
     problem.omega = adapter.vertex_weights(weights);
@@ -123,8 +123,7 @@ flattened (checked with exact predicates); the energy never increases.
 
 \throws Distortion_optimization::Invalid_input for the input `compute_distortion()` rejects,
 non-positive vertex weights, and, when the measure is infinite on inverted cells (normalized), a
-start map with an inverted or flat triangle (the message names it), and a harmonic start whose
-Laplacian system is singular (a free component without a fixed vertex; use `use_harmonic_start(false)`).
+start map with an inverted or flat triangle (the message names it).
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
@@ -138,7 +137,7 @@ minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& mea
 
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
-  const DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
+  DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
   auto solved = DO::internal::minimize_adapted<2>(adapter, measure, np, [&](std::size_t i) {
     return static_cast<bool>(CGAL::is_border(adapter.vertex_of[i], tm));
   });
@@ -180,7 +179,7 @@ minimize_distortion(const C3T3& c3t3, TargetMap target, const Measure& measure,
                     const NamedParameters& np = parameters::default_values())
 {
   namespace DO = Distortion_optimization;
-  const DO::internal::C3t3_adapter<C3T3> adapter(c3t3, target);
+  DO::internal::C3t3_adapter<C3T3> adapter(c3t3, target);
   auto solved = DO::internal::minimize_adapted<3>(adapter, measure, np, [&](std::size_t i) {
     return adapter.on_boundary[i] != 0;
   });

@@ -17,7 +17,6 @@
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
 
 #include <CGAL/Distortion_optimization/internal/cofactor.h>
-#include <CGAL/Distortion_optimization/internal/laplacian.h>
 #include <CGAL/Distortion_optimization/internal/local_step.h>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -99,14 +98,30 @@ public:
 
   bool has_free_vertices() const { return free_count_ > 0; }
 
-  // The harmonic start (see the file comment). Returns true if the map changed.
+  // The harmonic start (see the file comment), solved on the global step's sparsity pattern with
+  // the cell weights w(c) (for the default weights, the volume-weighted cotangent Laplacian).
+  // Returns true if the map changed.
   bool harmonic_start()
   {
     if(free_count_ == 0) return false;
-    const std::vector<Vec> harmonic = harmonic_targets(p_.map, p_.is_free);
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_count_, n), x(free_count_, n);
+    refill(nullptr, &rhs);
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
+                             Eigen::IncompleteCholesky<double>> solver;
+    solver.setTolerance(1e-10);
+    solver.setMaxIterations(2000);
+    solver.compute(P_);
+    if(solver.info() != Eigen::Success) return false;
     std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
+    for(int d = 0; d < n; ++d) {
+      Eigen::VectorXd guess(free_count_);
+      for(std::size_t v = 0; v < direction.size(); ++v)
+        if(free_index_[v] >= 0) guess[free_index_[v]] = p_.map.target[v][d];
+      x.col(d) = solver.solveWithGuess(rhs.col(d), guess);
+    }
+    if(!x.allFinite()) return false;   // a free part with no fixed vertex: no harmonic map
     for(std::size_t v = 0; v < direction.size(); ++v)
-      if(p_.is_free[v]) direction[v] = harmonic[v] - p_.map.target[v];
+      if(free_index_[v] >= 0) direction[v] = x.row(free_index_[v]).transpose() - p_.map.target[v];
     const double t_max = max_step(direction);
     // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
     // energy drops.
@@ -119,7 +134,7 @@ public:
   {
     if(free_count_ == 0) return false;
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(free_count_, n);
-    refill(g);
+    refill(&g, nullptr);
     solver_.setMaxIterations(30);
     solver_.setTolerance(1e-2);
     solver_.compute(P_);
@@ -145,15 +160,29 @@ private:
   // its free vertices the slot of their entry, so that reweighting only rewrites values.
   void build_pattern()
   {
-    std::vector<Eigen::Triplet<double>> entries;
-    for(std::uint32_t c : moving_cells_)
-      for(auto a : p_.map.cells[c])
-        for(auto b : p_.map.cells[c])
-          if(free_index_[a] >= 0 && free_index_[b] >= 0) entries.emplace_back(free_index_[a], free_index_[b], 0.);
+    // Column by column from the rings (no triplet list: it would be the peak of the whole run).
+    Eigen::VectorXi column_size = Eigen::VectorXi::Zero(free_count_);
+    std::vector<int> neighbours;
+    auto free_neighbours = [&](std::size_t a) {
+      neighbours.clear();
+      for(std::uint32_t k = p_.ring_begin[a]; k < p_.ring_begin[a + 1]; ++k)
+        for(auto b : p_.map.cells[p_.ring[k].cell])
+          if(free_index_[b] >= 0) neighbours.push_back(free_index_[b]);
+      std::sort(neighbours.begin(), neighbours.end());
+      neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    };
+    for(std::size_t a = 0; a < free_index_.size(); ++a)
+      if(free_index_[a] >= 0) { free_neighbours(a); column_size[free_index_[a]] = static_cast<int>(neighbours.size()); }
     P_.resize(free_count_, free_count_);
-    P_.setFromTriplets(entries.begin(), entries.end());
+    P_.reserve(column_size);
+    for(std::size_t a = 0; a < free_index_.size(); ++a)
+      if(free_index_[a] >= 0) {
+        free_neighbours(a);
+        for(int b : neighbours) P_.insert(b, free_index_[a]) = 0.;
+      }
     P_.makeCompressed();
     slots_.clear();
+    slots_.reserve(moving_cells_.size() * (n + 1) * (n + 1));
     for(std::uint32_t c : moving_cells_)
       for(auto a : p_.map.cells[c])
         for(auto b : p_.map.cells[c]) {
@@ -165,29 +194,36 @@ private:
         }
   }
 
-  // Refills P with the reweighted cell stiffnesses and accumulates the energy gradient g.
-  void refill(Eigen::MatrixXd& g)
+  // Refills P with the cell stiffnesses w(c) G^T G, reweighted by the measure's laplacian_weight
+  // for a global step (with the energy gradient accumulated into g), or not for the harmonic map
+  // (with the fixed vertices' contribution accumulated into rhs).
+  void refill(Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
     std::array<Vec, n + 1> cell_gradient;
     std::size_t k = 0;
     for(std::uint32_t c : moving_cells_) {
       const double w = p_.cell_weight[c];
-      cell_distortion<n>(measure_, p_.map, c, cell_gradient);
       const auto& cell = p_.map.cells[c];
-      for(int i = 0; i <= n; ++i)
-        if(free_index_[cell[i]] >= 0 && cell_gradient[i].allFinite())
-          g.row(free_index_[cell[i]]) += w * cell_gradient[i].transpose();
       double factor = 1;
-      if constexpr(measures_internal::Has_laplacian_weight<Measure, n>::value)
-        factor = measures_internal::laplacian_weight<n>(measure_, signed_singular_values(p_.map.jacobian(c)));
+      if(g) {
+        cell_distortion<n>(measure_, p_.map, c, cell_gradient);
+        for(int i = 0; i <= n; ++i)
+          if(free_index_[cell[i]] >= 0 && cell_gradient[i].allFinite())
+            g->row(free_index_[cell[i]]) += w * cell_gradient[i].transpose();
+        if constexpr(measures_internal::Has_laplacian_weight<Measure, n>::value)
+          factor = measures_internal::laplacian_weight<n>(measure_, signed_singular_values(p_.map.jacobian(c)));
+      }
       Eigen::Matrix<double, n, n + 1> G;   // hat-function gradients, as in cotangent_laplacian()
       G.template rightCols<n>() = p_.map.inverse_rest[c].transpose();
       G.col(0) = -G.template rightCols<n>().rowwise().sum();
       const Eigen::Matrix<double, n + 1, n + 1> K = (w * factor) * (G.transpose() * G);
       for(int a = 0; a <= n; ++a)
-        for(int b = 0; b <= n; ++b, ++k)
+        for(int b = 0; b <= n; ++b, ++k) {
           if(slots_[k] >= 0) P_.valuePtr()[slots_[k]] += K(a, b);
+          else if(rhs && free_index_[cell[a]] >= 0)
+            rhs->row(free_index_[cell[a]]) -= K(a, b) * p_.map.target[cell[b]].transpose();
+        }
     }
   }
 
