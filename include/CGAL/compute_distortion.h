@@ -83,12 +83,7 @@ compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measur
                    const NamedParameters& np = parameters::default_values())
 {
   namespace DO = Distortion_optimization;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-
-  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
-  const DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
+  const auto adapter = DO::internal::make_triangle_mesh_adapter(tm, target, np);
 
   return DO::internal::evaluate_adapted<2>(adapter, measure, np);
 }

@@ -132,12 +132,7 @@ minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& mea
                     const NamedParameters& np = parameters::default_values())
 {
   namespace DO = Distortion_optimization;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-
-  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
-  DO::internal::Triangle_mesh_adapter<TriangleMesh, decltype(vpm)> adapter(tm, vpm, target);
+  auto adapter = DO::internal::make_triangle_mesh_adapter(tm, target, np);
   auto solved = DO::internal::minimize_adapted<2>(adapter, measure, np, [&](std::size_t i) {
     return static_cast<bool>(CGAL::is_border(adapter.vertex_of[i], tm));
   });

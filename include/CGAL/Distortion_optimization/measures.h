@@ -110,32 +110,50 @@ double laplacian_weight(const Measure& m, const Singular_values<n>& s)
   }
 }
 
-// Conformal measures curve like 1 / s_n^2 near a flat cell, the isometric ones like the inverse
-// term of symmetric Dirichlet; measured on this package's benchmarks, these weights let the global
-// step move 30-100x farther than the plain Laplacian on maps with large volume changes.
-template <int n>
-double conformal_weight(const Singular_values<n>& s)
+// The global step's per-cell factor, a function of the smallest singular value: conformal
+// measures curve like 1 / s_n^2 near a flat cell, the isometric ones like the inverse term of
+// symmetric Dirichlet; measured on this package's benchmarks, these weights let the global step
+// move 30-100x farther than the plain Laplacian on maps with large volume changes.
+inline double conformal_weight(double s) { return 1. / (s * s); }
+inline double isometric_weight(double s) { return (1. + 3. / power<4>(s)) / 4; }
+
+// What the built-in measures declare about themselves (see the concept above), by family.
+template <double (*weight)(double)>
+struct Regular_measure
 {
-  return s[n - 1] > 0 ? 1. / (s[n - 1] * s[n - 1]) : 1.;
-}
-template <int n>
-double isometric_weight(const Singular_values<n>& s)
+  bool is_normalized() const { return true; }
+  template <int n> bool is_symmetric() const { return true; }
+  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return s[n - 1] > 0 ? weight(s[n - 1]) : 1.; }
+};
+struct Unbounded_measure   // finite on inverted cells, not symmetric, no reweighting
 {
-  return s[n - 1] > 0 ? (1. + 3. / power<4>(s[n - 1])) / 4 : 1.;
-}
+  bool is_normalized() const { return false; }
+  template <int n> bool is_symmetric() const { return false; }
+};
+template <class A, class B>
+struct Pair_of_measures    // what a combination of two measures inherits from both
+{
+  A a;
+  B b;
+  Pair_of_measures(const A& a, const B& b) : a(a), b(b) {}
+  bool is_normalized() const { return a.is_normalized() && b.is_normalized(); }
+  template <int n> bool is_symmetric() const { return a.template is_symmetric<n>() && b.template is_symmetric<n>(); }
+
+  template <int n>
+  double laplacian_weight(const Singular_values<n>& s) const
+  {
+    return std::max(measures_internal::laplacian_weight<n>(a, s), measures_internal::laplacian_weight<n>(b, s));
+  }
+};
 
 } // namespace measures_internal
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Quasi-conformal dilatation K = max(K_I, K_O) (eq. 8): K_I = s_1...s_{n-1} / s_n^{n-1},
 /// K_O = s_1^{n-1} / (s_2...s_n). Equals the condition number in 2D. Regular, minimum 1.
-struct Conformal_dilatation
+struct Conformal_dilatation : measures_internal::Regular_measure<measures_internal::conformal_weight>
 {
   std::string name() const { return "conformal"; }
-  bool is_normalized() const { return true; }
-  template <int n> bool is_symmetric() const { return true; }
-
-  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return measures_internal::conformal_weight<n>(s); }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -164,13 +182,9 @@ struct Conformal_dilatation
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Condition number (linear dilatation) s_1 / s_n (eq. 9). Regular, minimum 1.
-struct Condition_number
+struct Condition_number : measures_internal::Regular_measure<measures_internal::conformal_weight>
 {
   std::string name() const { return "condition"; }
-  bool is_normalized() const { return true; }
-  template <int n> bool is_symmetric() const { return true; }
-
-  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return measures_internal::conformal_weight<n>(s); }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -198,7 +212,7 @@ struct MIPS
   bool is_normalized() const { return true; }
   template <int n> bool is_symmetric() const { return n == 2; }
 
-  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return measures_internal::conformal_weight<n>(s); }
+  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return s[n - 1] > 0 ? measures_internal::conformal_weight(s[n - 1]) : 1.; }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -226,13 +240,9 @@ struct MIPS
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Quasi-isometric dilatation C = max(s_1, 1/s_n) (eq. 12). Regular, minimum 1.
-struct Isometric_dilatation
+struct Isometric_dilatation : measures_internal::Regular_measure<measures_internal::isometric_weight>
 {
   std::string name() const { return "isometric"; }
-  bool is_normalized() const { return true; }
-  template <int n> bool is_symmetric() const { return true; }
-
-  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return measures_internal::isometric_weight<n>(s); }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -252,11 +262,9 @@ struct Isometric_dilatation
 /// As-rigid-as-possible energy sum (s_i - 1)^2 (eq. 13), with the signed s_n, so that the
 /// nearest rotation (never a reflection) is the reference. Not normalized (finite on inverted
 /// cells), not symmetric; minimum 0.
-struct ARAP
+struct ARAP : measures_internal::Unbounded_measure
 {
   std::string name() const { return "arap"; }
-  bool is_normalized() const { return false; }
-  template <int n> bool is_symmetric() const { return false; }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -272,13 +280,9 @@ struct ARAP
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Symmetric Dirichlet energy (1/2n) sum (s_i^2 + s_i^-2) (eq. 14). Regular, minimum 1.
-struct Symmetric_dirichlet
+struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_internal::isometric_weight>
 {
   std::string name() const { return "symmetric_dirichlet"; }
-  bool is_normalized() const { return true; }
-  template <int n> bool is_symmetric() const { return true; }
-
-  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return measures_internal::isometric_weight<n>(s); }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -309,13 +313,9 @@ struct Symmetric_dirichlet
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Volume (area in 2D) distortion V = max(det J, 1/det J) (eq. 15). Regular, minimum 1.
-struct Volume_distortion
+struct Volume_distortion : measures_internal::Regular_measure<measures_internal::isometric_weight>
 {
   std::string name() const { return "volume"; }
-  bool is_normalized() const { return true; }
-  template <int n> bool is_symmetric() const { return true; }
-
-  template <int n> double laplacian_weight(const Singular_values<n>& s) const { return measures_internal::isometric_weight<n>(s); }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -344,11 +344,9 @@ struct Volume_distortion
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Dirichlet energy (1/n) sum s_i^2 (eq. 16). Not normalized (its minimum is the collapse to a
 /// point), not symmetric; 1 on rigid maps.
-struct Dirichlet
+struct Dirichlet : measures_internal::Unbounded_measure
 {
   std::string name() const { return "dirichlet"; }
-  bool is_normalized() const { return false; }
-  template <int n> bool is_symmetric() const { return false; }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -371,21 +369,13 @@ struct Dirichlet
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Product of two measures, e.g. K * C (the paper's Fig. 9). Normalized / symmetric when both are.
 template <class A, class B>
-struct Product
+struct Product : measures_internal::Pair_of_measures<A, B>
 {
-  A a;
-  B b;
-  Product(const A& a = A(), const B& b = B()) : a(a), b(b) {}
+  using measures_internal::Pair_of_measures<A, B>::a;
+  using measures_internal::Pair_of_measures<A, B>::b;
+  Product(const A& a = A(), const B& b = B()) : measures_internal::Pair_of_measures<A, B>(a, b) {}
 
   std::string name() const { return a.name() + "*" + b.name(); }
-  bool is_normalized() const { return a.is_normalized() && b.is_normalized(); }
-  template <int n> bool is_symmetric() const { return a.template is_symmetric<n>() && b.template is_symmetric<n>(); }
-
-  template <int n>
-  double laplacian_weight(const Singular_values<n>& s) const
-  {
-    return std::max(measures_internal::laplacian_weight<n>(a, s), measures_internal::laplacian_weight<n>(b, s));
-  }
 
   template <int n>
   double value(const Singular_values<n>& s) const
@@ -402,37 +392,32 @@ struct Product
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Weighted sum wa * A + wb * B of two measures. Normalized / symmetric when both are.
 template <class A, class B>
-struct Weighted_sum
+struct Weighted_sum : measures_internal::Pair_of_measures<A, B>
 {
-  double weight_a;
-  A a;
-  double weight_b;
-  B b;
+  using measures_internal::Pair_of_measures<A, B>::a;
+  using measures_internal::Pair_of_measures<A, B>::b;
+  double weight_a, weight_b;
   Weighted_sum(double weight_a, const A& a, double weight_b, const B& b)
-    : weight_a(weight_a), a(a), weight_b(weight_b), b(b) {}
+    : measures_internal::Pair_of_measures<A, B>(a, b), weight_a(weight_a), weight_b(weight_b) {}
 
   std::string name() const
   {
     return std::to_string(weight_a) + "*" + a.name() + "+" + std::to_string(weight_b) + "*" + b.name();
   }
-  bool is_normalized() const { return a.is_normalized() && b.is_normalized(); }
-  template <int n> bool is_symmetric() const { return a.template is_symmetric<n>() && b.template is_symmetric<n>(); }
-
-  template <int n>
-  double laplacian_weight(const Singular_values<n>& s) const
-  {
-    return std::max(measures_internal::laplacian_weight<n>(a, s), measures_internal::laplacian_weight<n>(b, s));
-  }
 
   template <int n>
   double value(const Singular_values<n>& s) const
   {
-    return weight_a * a.template value<n>(s) + weight_b * b.template value<n>(s);
+    // A zero weight drops its term (0 * inf would be NaN on an inverted cell).
+    return (weight_a != 0 ? weight_a * a.template value<n>(s) : 0.) + (weight_b != 0 ? weight_b * b.template value<n>(s) : 0.);
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
   {
-    return weight_a * a.template gradient<n>(s) + weight_b * b.template gradient<n>(s);
+    Singular_values<n> g = Singular_values<n>::Zero();
+    if(weight_a != 0) g += weight_a * a.template gradient<n>(s);
+    if(weight_b != 0) g += weight_b * b.template gradient<n>(s);
+    return g;
   }
 };
 

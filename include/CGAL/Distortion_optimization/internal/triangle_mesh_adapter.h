@@ -16,6 +16,8 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
 #include <cmath>
@@ -124,6 +126,15 @@ private:
     }
   }
 };
+
+// The adapter for the source positions named by `vertex_point_map` (default: the mesh's points).
+template <class TriangleMesh, class TargetMap, class NamedParameters>
+auto make_triangle_mesh_adapter(const TriangleMesh& tm, const TargetMap& target, const NamedParameters& np)
+{
+  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tm));
+  return Triangle_mesh_adapter<TriangleMesh, decltype(vpm)>(tm, vpm, target);
+}
 
 } // namespace internal
 } // namespace Distortion_optimization

@@ -1,0 +1,44 @@
+// libFuzzer target for the package's mesh readers. Build one binary per format with
+// -DFUZZ_READER=read_OFF, read_OBJ or read_MEDIT (scripts/fuzz.sh does). Any input must either
+// parse into a consistent soup or raise Invalid_input: another exception, a crash, a hang or a
+// sanitizer report is a bug.
+
+#include <CGAL/Distortion_optimization/IO/medit.h>
+#include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#ifndef FUZZ_READER
+#error "define FUZZ_READER as read_OFF, read_OBJ or read_MEDIT"
+#endif
+
+namespace IO = CGAL::Distortion_optimization::IO;
+
+template <class Cells>
+void check(const std::vector<std::array<double, 3>>& points, const Cells& cells)
+{
+  for(const auto& p : points)
+    for(double x : p)
+      if(!std::isfinite(x)) std::abort();
+  for(const auto& cell : cells)
+    for(std::size_t i : cell)
+      if(i >= points.size()) std::abort();
+}
+
+void check(const IO::Triangle_soup& s) { check(s.points, s.triangles); }
+void check(const IO::Tetrahedron_soup& s) { check(s.points, s.tetrahedra); }
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  try {
+    check(IO::FUZZ_READER(in, "fuzz"));
+  } catch(const CGAL::Distortion_optimization::Invalid_input&) {
+  }
+  return 0;
+}
