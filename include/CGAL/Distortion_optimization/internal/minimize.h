@@ -81,7 +81,11 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
       result.stopped_by_visitor = true;
       break;
     }
-    if(!(previous - energy > options.threshold * std::abs(previous - floor))) {
+    // With a positive threshold, an energy within 1e-9 (relative) of the floor has nothing left
+    // to gain: near a kink (K, C, V at their minimum) the last digits come only linearly.
+    const double above = std::abs(previous - floor);
+    if(!(previous - energy > options.threshold * above) ||
+       (options.threshold > 0 && above <= 1e-9 * std::abs(previous))) {
       result.converged = true;
       break;
     }
