@@ -30,7 +30,7 @@ Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& me
   std::vector<double> omega;
   auto weights = CGAL::parameters::get_parameter(np, internal_np::vertex_weight_map);
   if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
-    omega = adapter.vertex_weights(weights);
+    omega = vertex_weights(adapter.vertex_of, weights);
   auto cell_map = CGAL::parameters::get_parameter(np, internal_np::cell_distortion_map);
   constexpr bool wants_cells = !std::is_same<decltype(cell_map), CGAL::internal_np::Param_not_found>::value;
   std::vector<double> per_cell;

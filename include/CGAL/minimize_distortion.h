@@ -58,7 +58,7 @@ minimize_adapted(Adapter& adapter, const Measure& measure, const NamedParameters
   problem.map = std::move(adapter.map);   // the adapter keeps only its vertex and cell handles
   auto weights = get_parameter(np, internal_np::vertex_weight_map);
   if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
-    problem.omega = adapter.vertex_weights(weights);
+    problem.omega = vertex_weights(adapter.vertex_of, weights);
   auto constrained = get_parameter(np, CGAL::internal_np::vertex_is_constrained);
   problem.is_free.resize(adapter.vertex_of.size());
   for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i) {

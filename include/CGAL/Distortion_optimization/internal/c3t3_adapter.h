@@ -73,18 +73,6 @@ public:
 
   std::size_t index(Vertex_handle v) const { return index_.at(v); }
 
-  template <class VertexWeightMap>
-  std::vector<double> vertex_weights(const VertexWeightMap& weights) const
-  {
-    std::vector<double> w;
-    for(Vertex_handle v : vertex_of) {
-      w.push_back(static_cast<double>(get(weights, v)));
-      if(!(w.back() > 0) || !std::isfinite(w.back()))
-        throw Invalid_input("vertex " + std::to_string(w.size() - 1) + " has a weight that is not finite and positive");
-    }
-    return w;
-  }
-
 private:
   template <class ConstructPoint, class TargetMap>
   std::uint32_t index(Vertex_handle v, const ConstructPoint&, const TargetMap& target)

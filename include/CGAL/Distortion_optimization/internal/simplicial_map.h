@@ -8,6 +8,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 
+#include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -16,7 +17,9 @@
 
 #include <array>
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -69,6 +72,21 @@ inline Matrix<2> triangle_frame_edges(const Vector<3>& e1, const Vector<3>& e2)
   Dm << l1, e1.dot(e2) / l1,
         0., e1.cross(e2).norm() / l1;
   return Dm;
+}
+
+// omega(v) for the vertices of a map (handles in index order) from a vertex property map; throws
+// unless every weight is finite and positive.
+template <class Handles, class VertexWeightMap>
+std::vector<double> vertex_weights(const Handles& vertex_of, const VertexWeightMap& weights)
+{
+  std::vector<double> w;
+  w.reserve(vertex_of.size());
+  for(const auto& v : vertex_of) {
+    w.push_back(static_cast<double>(get(weights, v)));
+    if(!(w.back() > 0) || !std::isfinite(w.back()))
+      throw Invalid_input("vertex " + std::to_string(w.size() - 1) + " has a weight that is not finite and positive");
+  }
+  return w;
 }
 
 // Orientation of the target image of cell c with CGAL's exact predicate: +1, 0 or -1.

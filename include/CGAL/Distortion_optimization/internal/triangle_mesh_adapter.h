@@ -81,20 +81,6 @@ public:
 
   std::size_t index(vertex_descriptor v) const { return get(index_, v); }
 
-  // omega(v) from a vertex property map; throws unless every weight is finite and positive.
-  template <class VertexWeightMap>
-  std::vector<double> vertex_weights(const VertexWeightMap& weights) const
-  {
-    std::vector<double> w;
-    w.reserve(vertex_of.size());
-    for(vertex_descriptor v : vertex_of) {
-      w.push_back(static_cast<double>(get(weights, v)));
-      if(!(w.back() > 0) || !std::isfinite(w.back()))
-        throw Invalid_input("vertex " + std::to_string(w.size() - 1) + " has a weight that is not finite and positive");
-    }
-    return w;
-  }
-
 private:
   Index_map index_;
 
