@@ -164,6 +164,23 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   std::ofstream(fewer) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   expect_failure(base + " --target " + fewer, 1, "vertices");
 
+  IO::Triangle_soup rewired = IO::read_triangle_soup(t);
+  std::swap(rewired.triangles[3][1], rewired.triangles[3][2]);
+  const std::string other = temp("other_connectivity.off");
+  IO::write_triangle_soup(other, rewired);
+  expect_failure(base + " --target " + other, 1, "face 3 differs from the source's");
+
+  const std::string empty = temp("empty.off");
+  std::ofstream(empty) << "OFF\n0 0 0\n";
+  expect_failure("--source " + empty + " --output " + o, 1, "no triangle");
+  std::ofstream(temp("blank.off")) << "";
+  expect_failure("--source " + temp("blank.off") + " --output " + o, 1, "empty file");
+
+  // A source triangle of zero area (three collinear points).
+  std::ofstream(temp("collinear.off")) << "OFF\n3 1 0\n0 0 0\n1 1 0\n2 2 0\n3 0 1 2\n";
+  expect_failure("--source " + temp("collinear.off") + " --target " + temp("collinear.off") + " --output " + o, 1,
+                 "source face 0 is degenerate");
+
   const std::string truncated = temp("truncated.off");
   std::ofstream(truncated) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";
   expect_failure("--source " + truncated + " --output " + o, 1, "truncated");
