@@ -188,6 +188,20 @@ std::vector<unsigned char> read_fixed_vertices(const std::string& path, std::siz
   return fixed;
 }
 
+// A target must list the source's vertices (as many) and cells (the same, in the same order).
+template <class Points, class Cells>
+void check_same_cells(const std::string& name, const Points& source_points, const Cells& source_cells,
+                      const Points& target_points, const Cells& target_cells, const std::string& cell)
+{
+  if(target_points.size() != source_points.size() || target_cells.size() != source_cells.size())
+    throw DO::Invalid_input(name + ": " + std::to_string(target_points.size()) + " vertices and " +
+                            std::to_string(target_cells.size()) + " cells, the source has " +
+                            std::to_string(source_points.size()) + " and " + std::to_string(source_cells.size()));
+  for(std::size_t k = 0; k < source_cells.size(); ++k)
+    if(target_cells[k] != source_cells[k])
+      throw DO::Invalid_input(name + ": " + cell + " " + std::to_string(k) + " differs from the source's (same connectivity needed)");
+}
+
 // The options both kinds of mesh share.
 auto common_parameters(const Command_line& c)
 {
@@ -237,13 +251,7 @@ int run_triangles(const Command_line& c)
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
   if(!c.target.empty()) {
     const DO::IO::Triangle_soup target = DO::IO::read_triangle_soup(c.target);
-    if(target.points.size() != source.points.size() || target.triangles.size() != source.triangles.size())
-      throw DO::Invalid_input(c.target + ": " + std::to_string(target.points.size()) + " vertices and " +
-                              std::to_string(target.triangles.size()) + " faces, the source has " +
-                              std::to_string(source.points.size()) + " and " + std::to_string(source.triangles.size()));
-    for(std::size_t f = 0; f < source.triangles.size(); ++f)
-      if(target.triangles[f] != source.triangles[f])
-        throw DO::Invalid_input(c.target + ": face " + std::to_string(f) + " differs from the source's (same connectivity needed)");
+    check_same_cells(c.target, source.points, source.triangles, target.points, target.triangles, "face");
     for(std::size_t i = 0; i < target.points.size(); ++i) {
       if(target.points[i][2] != 0)
         throw DO::Invalid_input(c.target + ": vertex " + std::to_string(i) + " has z != 0 (the target must be planar)");
@@ -302,13 +310,7 @@ int run_tetrahedra(const Command_line& c)
   DO::IO::Tetrahedron_soup target = source;
   if(!c.target.empty()) {
     target = DO::IO::read_tetrahedron_soup(c.target);
-    if(target.points.size() != source.points.size() || target.tetrahedra.size() != source.tetrahedra.size())
-      throw DO::Invalid_input(c.target + ": " + std::to_string(target.points.size()) + " vertices and " +
-                              std::to_string(target.tetrahedra.size()) + " tetrahedra, the source has " +
-                              std::to_string(source.points.size()) + " and " + std::to_string(source.tetrahedra.size()));
-    for(std::size_t t = 0; t < source.tetrahedra.size(); ++t)
-      if(target.tetrahedra[t] != source.tetrahedra[t])
-        throw DO::Invalid_input(c.target + ": tetrahedron " + std::to_string(t) + " differs from the source's (same connectivity needed)");
+    check_same_cells(c.target, source.points, source.tetrahedra, target.points, target.tetrahedra, "tetrahedron");
   }
   C3t3 c3t3;
   const auto handles = DO::c3t3_from_tetrahedra(source.points, source.tetrahedra, c3t3);
