@@ -214,9 +214,7 @@ private:
         if constexpr(measures_internal::Has_laplacian_weight<Measure, n>::value)
           factor = measures_internal::laplacian_weight<n>(measure_, signed_singular_values(p_.map.jacobian(c)));
       }
-      Eigen::Matrix<double, n, n + 1> G;   // hat-function gradients, as in cotangent_laplacian()
-      G.template rightCols<n>() = p_.map.inverse_rest[c].transpose();
-      G.col(0) = -G.template rightCols<n>().rowwise().sum();
+      const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
       const Eigen::Matrix<double, n + 1, n + 1> K = (w * factor) * (G.transpose() * G);
       for(int a = 0; a <= n; ++a)
         for(int b = 0; b <= n; ++b, ++k) {
@@ -254,28 +252,12 @@ private:
     std::vector<Vec>& x = p_.map.target;
     const std::vector<Vec> x0 = x;
     const double e0 = local_.energy();
-    trial_.resize(moving_cells_.size());
+    const auto moving_cell = [&](std::size_t i) { return moving_cells_[i]; };
     for(int k = 0; k < 30 && t > 0; ++k, t *= 0.5) {
       for(std::size_t v = 0; v < x.size(); ++v)
         if(p_.is_free[v]) x[v] = x0[v] + t * direction[v];
-      double e = e0;
-      for(std::size_t i = 0; i < moving_cells_.size(); ++i) {
-        const std::uint32_t c = moving_cells_[i];
-        trial_[i] = cell_distortion<n>(measure_, p_.map.jacobian(c));
-        e += p_.cell_weight[c] * (trial_[i] - local_.cell_value[c]);
-      }
-      if(!(e <= e0 + 1e-4 * t * slope) || !(e0 - e > 64 * std::numeric_limits<double>::epsilon() * std::abs(e0)))
-        continue;
-      bool flips = false;
-      for(std::size_t i = 0; i < moving_cells_.size() && !flips; ++i)
-        flips = local_.cell_ok[moving_cells_[i]] && is_inverted(p_.map, moving_cells_[i]);
-      if(flips) continue;
-      for(std::size_t i = 0; i < moving_cells_.size(); ++i) {
-        const std::uint32_t c = moving_cells_[i];
-        local_.cell_value[c] = trial_[i];
-        if(!local_.cell_ok[c]) local_.cell_ok[c] = !is_inverted(p_.map, c);
-      }
-      return true;
+      if(local_.accept_trial(moving_cells_.size(), moving_cell, e0, Local_step<n, Measure>::armijo * t * slope))
+        return true;
     }
     x = x0;
     return false;
@@ -291,7 +273,6 @@ private:
   std::vector<int> slots_;
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver_;
   Eigen::MatrixXd previous_solution_;
-  std::vector<double> trial_;
   double last_t_ = 0;
 };
 

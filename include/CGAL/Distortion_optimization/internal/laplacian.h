@@ -30,9 +30,7 @@ Eigen::SparseMatrix<double> cotangent_laplacian(const Simplicial_map<n>& map)
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(map.number_of_cells() * (n + 1) * (n + 1));
   for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
-    Eigen::Matrix<double, n, n + 1> G;   // columns: grad l_0 .. grad l_n
-    G.template rightCols<n>() = map.inverse_rest[c].transpose();
-    G.col(0) = -G.template rightCols<n>().rowwise().sum();
+    const Eigen::Matrix<double, n, n + 1> G = map.hat_gradients(c);
     const Eigen::Matrix<double, n + 1, n + 1> K = map.rest_volume[c] * G.transpose() * G;
     for(int i = 0; i <= n; ++i)
       for(int j = 0; j <= n; ++j) entries.emplace_back(map.cells[c][i], map.cells[c][j], K(i, j));

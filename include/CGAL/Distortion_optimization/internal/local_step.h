@@ -127,6 +127,32 @@ public:
     return moved;
   }
 
+  // The trial half of every line search, local or global: the targets of cells cell_at(0),
+  // ..., cell_at(count - 1) have just moved, the energy was e0. Accepts, and commits their
+  // values, if the energy becomes at most e0 + bound (Armijo) by a decrease above the rounding
+  // error of e0 (so that accepted moves really decrease the energy) and no positive cell flipped
+  // or flattened (exact predicate).
+  template <class CellAt>
+  bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound)
+  {
+    trial_.resize(count);
+    double e = e0;
+    for(std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t c = cell_at(i);
+      trial_[i] = cell_distortion<n>(measure_, p_.map.jacobian(c));
+      e += p_.cell_weight[c] * (trial_[i] - cell_value[c]);
+    }
+    if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
+    for(std::size_t i = 0; i < count; ++i)
+      if(cell_ok[cell_at(i)] && is_inverted(p_.map, cell_at(i))) return false;
+    for(std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t c = cell_at(i);
+      cell_value[c] = trial_[i];
+      if(!cell_ok[c]) cell_ok[c] = !is_inverted(p_.map, c);
+    }
+    return true;
+  }
+
 private:
   // The ring's energy sum_c w(c) D(J_c) at the current position of v and its gradient in v.
   double ring_gradient(std::size_t v, Vec& g) const
@@ -176,38 +202,18 @@ private:
     Vec& x = p_.map.target[v];
     const Vec x0 = x;
     const std::uint32_t begin = p_.ring_begin[v], end = p_.ring_begin[v + 1];
-    trial_.resize(end - begin);
+    const auto ring_cell = [&](std::size_t i) { return p_.ring[begin + i].cell; };
     for(int k = 0; k < max_backtracks && t > 0; ++k, t *= 0.5) {
       x = x0 + t * d;
       if(x == x0) break;   // the step no longer changes the position
-      double e = 0;
-      for(std::uint32_t i = begin; i < end; ++i) {
-        const std::uint32_t c = p_.ring[i].cell;
-        trial_[i - begin] = cell_distortion<n>(measure_, p_.map.jacobian(c));
-        e += p_.cell_weight[c] * trial_[i - begin];
-      }
-      // Armijo, and a decrease above the rounding error of the ring sums, so that accepted moves
-      // really decrease the energy.
-      if(!(e <= e0 + armijo * t * slope) || !(e0 - e > rounding * std::abs(e0))) continue;
-      bool flips = false;
-      for(std::uint32_t i = begin; i < end && !flips; ++i) {
-        const std::uint32_t c = p_.ring[i].cell;
-        flips = cell_ok[c] && is_inverted(p_.map, c);
-      }
-      if(flips) continue;
-      for(std::uint32_t i = begin; i < end; ++i) {
-        const std::uint32_t c = p_.ring[i].cell;
-        cell_value[c] = trial_[i - begin];
-        if(!cell_ok[c]) cell_ok[c] = !is_inverted(p_.map, c);
-      }
-      return true;
+      if(accept_trial(end - begin, ring_cell, e0, armijo * t * slope)) return true;
     }
     x = x0;
     return false;
   }
 
   std::vector<double> last_step_;   // last accepted step parameter of each vertex
-  std::vector<double> trial_;       // ring cell values at a trial position
+  std::vector<double> trial_;       // cell values at a trial position
 };
 
 } // namespace internal

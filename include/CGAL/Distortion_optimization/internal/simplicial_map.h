@@ -61,6 +61,16 @@ struct Simplicial_map
   }
 
   Matrix<n> jacobian(std::size_t c) const { return target_edges(c) * inverse_rest[c]; }
+
+  // The gradients of the hat functions of cell c's vertices (columns): with B = Dm^-1, row i-1 of
+  // B for vertex i >= 1, and minus their sum for vertex 0.
+  Eigen::Matrix<double, n, n + 1> hat_gradients(std::size_t c) const
+  {
+    Eigen::Matrix<double, n, n + 1> G;
+    G.template rightCols<n>() = inverse_rest[c].transpose();
+    G.col(0) = -G.template rightCols<n>().rowwise().sum();
+    return G;
+  }
 };
 
 // The edges of a triangle of R^3 in its own 2D frame: e1 along the x axis, the triangle in the
