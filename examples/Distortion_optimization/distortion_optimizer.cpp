@@ -31,6 +31,7 @@
 #include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <unordered_map>
@@ -64,7 +65,8 @@ const char* usage =
   "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
   "               energy above the measure's minimum (default 1e-4)\n"
   "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
-  "  --threads    number of threads (default 1; the optimizer runs on one thread for now)\n"
+  "  --threads    number of threads (default 1); the output is the same for every run with\n"
+  "               the same number\n"
   "  --report     also write the results as JSON\n"
   "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
   "               harmonic start), local (the paper's sweeps only) or global\n";
@@ -208,7 +210,8 @@ auto common_parameters(const Command_line& c)
   const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
   const auto schedule = c.schedule == "local" ? DO::Schedule::LOCAL
                       : c.schedule == "global" ? DO::Schedule::GLOBAL : DO::Schedule::ALTERNATING;
-  return DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold)))
+  return DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)),
+    DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold))))
     .number_of_iterations(c.iterations);
 }
 

@@ -35,11 +35,15 @@ Options read_options(const NamedParameters& np)
   o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
   o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
   o.schedule = choose_parameter(get_parameter(np, internal_np::schedule), o.schedule);
+  o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
+  o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
   o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
                                       o.schedule != Schedule::LOCAL);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
     o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };
+  if(o.threads < 0)
+    throw Invalid_input("the number of threads must be 0 (all) or positive");
   if(!(o.threshold >= 0))
     throw Invalid_input("the convergence threshold must be a non-negative number");
   return o;
@@ -116,6 +120,11 @@ flattened (checked with exact predicates); the energy never increases.
     sweep), `GLOBAL` (one preconditioned step of all free vertices) or `ALTERNATING` (default: both)
   - `Distortion_optimization::parameters::use_harmonic_start`: start from the harmonic map of the
     fixed vertices, or from the best safe point towards it; default `true` except with `LOCAL`
+  - `Distortion_optimization::parameters::number_of_threads`: threads for the sweeps and global
+    steps when the program links `CGAL::TBB_support`; 0 for all; default 1. The output is
+    deterministic for a given number of threads.
+  - `Distortion_optimization::parameters::parallel_sweep`: `INDEPENDENT_SETS` (default) or
+    `PARTITION` (the paper's Algorithm 3), for more than one thread
   - `CGAL::parameters::visitor`: a callable `bool(std::size_t iteration, double energy)` called
     after each sweep; returning `false` stops the run with the map of that sweep
 

@@ -191,6 +191,40 @@ TEST(TetrahedralMeshes, StarShapedBallAndHarmonicStartsAreValidAndImprove)
   EXPECT_EQ(inverted(c3t3, harmonic), 0u);
 }
 
+TEST(TetrahedralMeshes, ParallelRunsMatchOneThreadAndAreDeterministic)
+{
+  // The paper's Table 1 setting at about 6K tets: TetGen cube, radial start, boundary fixed, K.
+  std::vector<std::array<double, 3>> corners;
+  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
+  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  DO::tetrahedralize_with_tetgen(corners, faces, 0.002, points, tets);
+  C3t3 c3t3;
+  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  auto run = [&](int threads, DO::Parallel_sweep method, Target_storage& storage) {
+    storage.clear();
+    DO::map_vertices(c3t3, Target_map(storage), radial);
+    return CGAL::minimize_distortion(c3t3, Target_map(storage), DO::Conformal_dilatation(),
+      DO::parameters::number_of_threads(threads, DO::parameters::parallel_sweep(method)).number_of_iterations(200));
+  };
+  Target_storage sequential_map;
+  const auto sequential = run(1, DO::Parallel_sweep::INDEPENDENT_SETS, sequential_map);
+  ASSERT_TRUE(sequential.converged);
+  for(auto method : {DO::Parallel_sweep::INDEPENDENT_SETS, DO::Parallel_sweep::PARTITION}) {
+    Target_storage first, second;
+    const auto r = run(2, method, first);
+    EXPECT_TRUE(r.converged);
+    EXPECT_NEAR(r.final_energy, sequential.final_energy, 1e-3 * sequential.final_energy);
+    EXPECT_EQ(r.inverted_cells, 0u);
+    EXPECT_EQ(inverted(c3t3, first), 0u);
+    const auto again = run(2, method, second);
+    EXPECT_EQ(r.energy_per_iteration, again.energy_per_iteration);
+    EXPECT_TRUE(first == second) << "two runs with 2 threads differ";
+  }
+}
+
 TEST(TetrahedralMeshes, HarmonicMapOfAnAffineBoundaryIsThatAffineMap)
 {
   const C3t3 c3t3 = mesh_sphere(0.4);

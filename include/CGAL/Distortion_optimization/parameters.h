@@ -51,6 +51,14 @@ enum class Schedule
   ALTERNATING  ///< a local sweep, then a global step (the default: far fewer iterations)
 };
 
+/// \ingroup PkgDistortionOptimizationRef
+/// How local sweeps are shared among threads (with `number_of_threads` > 1).
+enum class Parallel_sweep
+{
+  INDEPENDENT_SETS, ///< the default: colour classes of vertices that share no cell, each optimized at once
+  PARTITION         ///< the paper's Algorithm 3: k spatial parts in parallel after their interface
+};
+
 namespace internal_np {
 enum schedule_t { schedule };
 enum use_harmonic_start_t { use_harmonic_start };
@@ -60,6 +68,8 @@ enum cell_weighting_t { cell_weighting };
 enum convergence_threshold_t { convergence_threshold };
 enum local_solver_t { local_solver };
 enum vertex_order_t { vertex_order };
+enum number_of_threads_t { number_of_threads };
+enum parallel_sweep_t { parallel_sweep };
 } // namespace internal_np
 
 namespace parameters {
@@ -94,6 +104,13 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(schedule_t, schedule)
 /// the best safe point towards it); default `true`, except with `Schedule::LOCAL` (the paper's
 /// schedule, which starts from the given map).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(use_harmonic_start_t, use_harmonic_start)
+
+/// `int`: threads for the sweeps and the global steps; 0 takes all the hardware offers; default 1.
+/// Used when the program links `CGAL::TBB_support` (CGAL_LINKED_WITH_TBB), sequential otherwise.
+/// For a given number of threads the output is deterministic.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
+/// A `Parallel_sweep`; default `Parallel_sweep::INDEPENDENT_SETS`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_sweep)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 

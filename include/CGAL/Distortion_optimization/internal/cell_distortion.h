@@ -44,14 +44,15 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J)
 }
 
 /// D(J) and dD/dJ. Where D is +inf (an inverted cell under a normalized measure) or J is not
-/// finite, dJ is NaN.
+/// finite, dJ is NaN. If `sigma` is given it receives the signed singular values of J.
 template <int n, class Measure>
-double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ)
+double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ, Vector<n>* sigma = nullptr)
 {
   double value = not_a_number;
   if(J.allFinite()) {
     if constexpr(Has_value_without_svd<Measure, n>::value) {
       value = measure.template value_without_svd<n>(J, &dJ);
+      if(sigma) *sigma = signed_singular_values(J);
     } else if constexpr(n == 2) {
       // J = S + A with S = [E -H; H E] a similarity and A = [F G; G -F] an anti-similarity:
       // sigma = (Q + R, Q - R) with Q = |(E, H)|, R = |(F, G)|, dQ/dJ = S / 2Q, dR/dJ = A / 2R,
@@ -59,10 +60,11 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
       const double E = 0.5 * (J(0, 0) + J(1, 1)), F = 0.5 * (J(0, 0) - J(1, 1));
       const double G = 0.5 * (J(1, 0) + J(0, 1)), H = 0.5 * (J(1, 0) - J(0, 1));
       const double Q = std::hypot(E, H), R = std::hypot(F, G), s1 = Q + R;
-      const Vector<2> sigma(s1, s1 > 0 ? (J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0)) / s1 : 0.);
-      value = measure.template value<2>(sigma);
+      const Vector<2> s(s1, s1 > 0 ? (J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0)) / s1 : 0.);
+      value = measure.template value<2>(s);
+      if(sigma) *sigma = s;
       if(value < std::numeric_limits<double>::infinity()) {
-        const Vector<2> g = measure.template gradient<2>(sigma);
+        const Vector<2> g = measure.template gradient<2>(s);
         const double a = Q > 0 ? (g[0] + g[1]) / (2 * Q) : 0., b = R > 0 ? (g[0] - g[1]) / (2 * R) : 0.;
         dJ << a * E + b * F, -a * H + b * G,
               a * H + b * G,  a * E - b * F;
@@ -71,6 +73,7 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
       Signed_svd<n> svd;
       signed_svd(J, svd);
       value = measure.template value<n>(svd.sigma);
+      if(sigma) *sigma = svd.sigma;
       if(value < std::numeric_limits<double>::infinity())
         dJ.noalias() = svd.U * measure.template gradient<n>(svd.sigma).asDiagonal() * svd.V.transpose();
     }
@@ -84,10 +87,10 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
 /// with G = dD/dJ Dm^-T, dD/dx_i is column i-1 of G and dD/dx_0 = -(sum of the columns).
 template <int n, class Measure>
 double cell_distortion(const Measure& measure, const Simplicial_map<n>& map, std::size_t c,
-                       std::array<Vector<n>, n + 1>& vertex_gradients)
+                       std::array<Vector<n>, n + 1>& vertex_gradients, Vector<n>* sigma = nullptr)
 {
   Matrix<n> dJ;
-  const double value = cell_distortion<n>(measure, map.jacobian(c), dJ);
+  const double value = cell_distortion<n>(measure, map.jacobian(c), dJ, sigma);
   const Matrix<n> G = dJ * map.inverse_rest[c].transpose();
   vertex_gradients[0] = -G.rowwise().sum();
   for(int i = 0; i < n; ++i)

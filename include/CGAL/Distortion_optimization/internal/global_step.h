@@ -23,6 +23,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -33,45 +34,47 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// The smallest positive root of c0 + c1 t + c2 t^2 + c3 t^3 when c0 > 0 (+inf if none): the first
-// t at which a cell's signed volume reaches 0. Roots are bracketed between the critical points and
+// The smallest root in (0, bound] of c0 + c1 t + c2 t^2 + c3 t^3 when c0 > 0 (bound if none): the
+// first t at which a cell's signed volume reaches 0. Most cells are cleared at once by a lower
+// bound of the polynomial on [0, bound]; roots are bracketed between the critical points and
 // refined by bisection, which is robust to the cancellations of closed formulas.
-inline double first_positive_root(double c0, double c1, double c2, double c3)
+inline double first_positive_root(double c0, double c1, double c2, double c3, double bound)
 {
+  if(c0 + std::min(c1, 0.) * bound + std::min(c2, 0.) * bound * bound + std::min(c3, 0.) * bound * bound * bound > 0)
+    return bound;
   auto p = [&](double t) { return c0 + t * (c1 + t * (c2 + t * c3)); };
-  std::vector<double> stops;
-  // Critical points: roots of c1 + 2 c2 t + 3 c3 t^2.
+  // Critical points (roots of c1 + 2 c2 t + 3 c3 t^2), then the bound.
+  std::array<double, 3> stops;
+  std::size_t count = 0;
   const double a = 3 * c3, b = 2 * c2, c = c1;
   if(a != 0) {
     const double disc = b * b - 4 * a * c;
     if(disc >= 0) {
       const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-      if(q != 0) stops.push_back(c / q);
-      stops.push_back(q / a);
+      if(q != 0) stops[count++] = c / q;
+      stops[count++] = q / a;
     }
   } else if(b != 0) {
-    stops.push_back(-c / b);
+    stops[count++] = -c / b;
   }
-  std::sort(stops.begin(), stops.end());
+  std::sort(stops.begin(), stops.begin() + count);
+  stops[count++] = bound;
   double left = 0;
-  auto bisect = [&](double lo, double hi) {
-    for(int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
-      const double mid = 0.5 * (lo + hi);
-      (p(mid) > 0 ? lo : hi) = mid;
-    }
-    return lo;   // the side where the volume is still positive
-  };
-  for(double s : stops) {
+  for(std::size_t i = 0; i < count; ++i) {
+    const double s = std::min(stops[i], bound);
     if(!(s > left)) continue;
-    if(p(s) <= 0) return bisect(left, s);
+    if(p(s) <= 0) {
+      // Bisection to 1e-12 relative: callers take a fraction of the root anyway.
+      double lo = left, hi = s;
+      for(int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (p(mid) > 0 ? lo : hi) = mid;
+      }
+      return lo;   // the side where the volume is still positive
+    }
     left = s;
   }
-  // Beyond the last critical point p is monotone: it has a root iff it heads down.
-  const double leading = c3 != 0 ? c3 : c2 != 0 ? c2 : c1;
-  if(!(leading < 0)) return std::numeric_limits<double>::infinity();
-  double hi = std::max(1., 2 * left);
-  while(p(hi) > 0 && hi < 1e300) hi *= 2;
-  return p(hi) > 0 ? std::numeric_limits<double>::infinity() : bisect(left, hi);
+  return bound;
 }
 
 template <int n, class Measure>
@@ -80,8 +83,9 @@ class Global_step
   using Vec = Vector<n>;
 
 public:
-  Global_step(Optimization_problem<n>& problem, const Measure& measure, Local_step<n, Measure>& local)
-    : p_(problem), measure_(measure), local_(local)
+  Global_step(Optimization_problem<n>& problem, const Measure& measure, Local_step<n, Measure>& local,
+              const Workers& workers)
+    : p_(problem), measure_(measure), local_(local), workers_(workers)
   {
     const std::size_t nv = p_.number_of_vertices();
     free_index_.assign(nv, -1);
@@ -122,9 +126,9 @@ public:
     if(!x.allFinite()) return false;   // a free part with no fixed vertex: no harmonic map
     for(std::size_t v = 0; v < direction.size(); ++v)
       if(free_index_[v] >= 0) direction[v] = x.row(free_index_[v]).transpose() - p_.map.target[v];
-    const double t_max = max_step(direction);
     // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
     // energy drops.
+    const double t_max = max_step(direction, 1 / 0.9);
     double t = t_max > 1 ? 1. : 0.9 * t_max;
     return line_search(direction, t, 0.);
   }
@@ -148,8 +152,8 @@ public:
     std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
     for(std::size_t v = 0; v < direction.size(); ++v)
       if(free_index_[v] >= 0) direction[v] = x.row(free_index_[v]).transpose();
-    const double t_max = max_step(direction);
-    double t = std::min(last_t_ > 0 ? 2 * last_t_ : 1., 0.9 * t_max);
+    const double cap = last_t_ > 0 ? 2 * last_t_ : 1.;
+    double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
     const bool moved = line_search(direction, t, slope);
     if(moved) last_t_ = t;
     return moved;
@@ -196,53 +200,65 @@ private:
 
   // Refills P with the cell stiffnesses w(c) G^T G, reweighted by the measure's laplacian_weight
   // for a global step (with the energy gradient accumulated into g), or not for the harmonic map
-  // (with the fixed vertices' contribution accumulated into rhs).
+  // (with the fixed vertices' contribution accumulated into rhs). The cells' parts are computed in
+  // parallel, block by block, then added in cell order (so that the sums do not depend on threads).
   void refill(Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
-    std::array<Vec, n + 1> cell_gradient;
-    std::size_t k = 0;
-    for(std::uint32_t c : moving_cells_) {
-      const double w = p_.cell_weight[c];
-      const auto& cell = p_.map.cells[c];
-      double factor = 1;
-      if(g) {
-        cell_distortion<n>(measure_, p_.map, c, cell_gradient);
-        for(int i = 0; i <= n; ++i)
-          if(free_index_[cell[i]] >= 0 && cell_gradient[i].allFinite())
-            g->row(free_index_[cell[i]]) += w * cell_gradient[i].transpose();
-        if constexpr(measures_internal::Has_laplacian_weight<Measure, n>::value)
-          factor = measures_internal::laplacian_weight<n>(measure_, signed_singular_values(p_.map.jacobian(c)));
-      }
-      const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
-      const Eigen::Matrix<double, n + 1, n + 1> K = (w * factor) * (G.transpose() * G);
-      for(int a = 0; a <= n; ++a)
-        for(int b = 0; b <= n; ++b, ++k) {
-          if(slots_[k] >= 0) P_.valuePtr()[slots_[k]] += K(a, b);
-          else if(rhs && free_index_[cell[a]] >= 0)
-            rhs->row(free_index_[cell[a]]) -= K(a, b) * p_.map.target[cell[b]].transpose();
+    constexpr std::size_t block = 8192;
+    std::vector<Eigen::Matrix<double, n + 1, n + 1>> stiffness(std::min(block, moving_cells_.size()));
+    std::vector<std::array<Vec, n + 1>> gradient(g ? stiffness.size() : 0);
+    for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
+      const std::size_t count = std::min(block, moving_cells_.size() - first);
+      workers_.for_each(count, 256, [&](std::size_t i) {
+        const std::uint32_t c = moving_cells_[first + i];
+        double factor = 1;
+        if(g) {
+          constexpr bool reweighted = measures_internal::Has_laplacian_weight<Measure, n>::value;
+          Vec sigma = Vec::Ones();
+          cell_distortion<n>(measure_, p_.map, c, gradient[i], reweighted ? &sigma : nullptr);
+          if constexpr(reweighted) factor = measures_internal::laplacian_weight<n>(measure_, sigma);
         }
+        const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
+        stiffness[i] = (p_.cell_weight[c] * factor) * (G.transpose() * G);
+      });
+      for(std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t c = moving_cells_[first + i];
+        const auto& cell = p_.map.cells[c];
+        const double w = p_.cell_weight[c];
+        if(g)
+          for(int a = 0; a <= n; ++a)
+            if(free_index_[cell[a]] >= 0 && gradient[i][a].allFinite())
+              g->row(free_index_[cell[a]]) += w * gradient[i][a].transpose();
+        const int* slot = &slots_[(first + i) * (n + 1) * (n + 1)];
+        for(int a = 0; a <= n; ++a)
+          for(int b = 0; b <= n; ++b, ++slot) {
+            if(*slot >= 0) P_.valuePtr()[*slot] += stiffness[i](a, b);
+            else if(rhs && free_index_[cell[a]] >= 0)
+              rhs->row(free_index_[cell[a]]) -= stiffness[i](a, b) * p_.map.target[cell[b]].transpose();
+          }
+      }
     }
   }
 
-  // The exact largest t such that no valid cell degenerates at X + t D.
-  double max_step(const std::vector<Vec>& direction) const
+  // The exact largest t <= bound such that no valid cell degenerates at X + t D.
+  double max_step(const std::vector<Vec>& direction, double bound) const
   {
-    double t_max = std::numeric_limits<double>::infinity();
-    for(std::uint32_t c : moving_cells_) {
-      if(!local_.cell_ok[c]) continue;
+    const auto cell_bound = [&](std::size_t i) {
+      const std::uint32_t c = moving_cells_[i];
+      if(!local_.cell_ok[c]) return bound;
       const auto& cell = p_.map.cells[c];
       Matrix<n> A = p_.map.target_edges(c), B;
-      for(int i = 0; i < n; ++i) B.col(i) = direction[cell[i + 1]] - direction[cell[0]];
+      for(int k = 0; k < n; ++k) B.col(k) = direction[cell[k + 1]] - direction[cell[0]];
       const double sign = p_.map.rest_sign[c];
       const Cofactor_and_determinant<n> a(A), b(B);
       const double c0 = sign * a.det, c1 = sign * (a.cofactor.array() * B.array()).sum();
       double c2, c3 = 0;
       if constexpr(n == 2) c2 = sign * b.det;
       else { c2 = sign * (b.cofactor.array() * A.array()).sum(); c3 = sign * b.det; }
-      if(c0 > 0) t_max = std::min(t_max, first_positive_root(c0, c1, c2, c3));
-    }
-    return t_max;
+      return c0 > 0 ? first_positive_root(c0, c1, c2, c3, bound) : bound;
+    };
+    return workers_.reduce(moving_cells_.size(), bound, cell_bound, [](double a, double b) { return std::min(a, b); });
   }
 
   // Backtracks from t along D until the energy decreases (Armijo with the given slope, or any
@@ -254,9 +270,8 @@ private:
     const double e0 = local_.energy();
     const auto moving_cell = [&](std::size_t i) { return moving_cells_[i]; };
     for(int k = 0; k < 30 && t > 0; ++k, t *= 0.5) {
-      for(std::size_t v = 0; v < x.size(); ++v)
-        if(p_.is_free[v]) x[v] = x0[v] + t * direction[v];
-      if(local_.accept_trial(moving_cells_.size(), moving_cell, e0, Local_step<n, Measure>::armijo * t * slope))
+      workers_.for_each(x.size(), 4096, [&](std::size_t v) { if(p_.is_free[v]) x[v] = x0[v] + t * direction[v]; });
+      if(local_.accept_trial(moving_cells_.size(), moving_cell, e0, Local_step<n, Measure>::armijo * t * slope, &workers_))
         return true;
     }
     x = x0;
@@ -266,6 +281,7 @@ private:
   Optimization_problem<n>& p_;
   const Measure& measure_;
   Local_step<n, Measure>& local_;
+  const Workers& workers_;
   std::vector<int> free_index_;
   int free_count_ = 0;
   std::vector<std::uint32_t> moving_cells_;

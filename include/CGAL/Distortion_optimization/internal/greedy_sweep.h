@@ -89,6 +89,27 @@ private:
   std::vector<double> key_;
 };
 
+// Optimizes each of the given vertices once, the most distorted (at the start) first. Ties keep
+// the given order, so that the result does not depend on the sort's implementation.
+template <int n, class Measure>
+void sorted_sweep(Local_step<n, Measure>& step, const std::vector<std::uint32_t>& vertices)
+{
+  std::vector<std::pair<double, std::uint32_t>> keyed;
+  keyed.reserve(vertices.size());
+  for(std::uint32_t v : vertices) keyed.emplace_back(step.vertex_distortion(v), v);
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for(const auto& kv : keyed) step.optimize(kv.second);
+}
+
+template <int n>
+std::vector<std::uint32_t> free_vertices(const Optimization_problem<n>& p)
+{
+  std::vector<std::uint32_t> vertices;
+  for(std::size_t v = 0; v < p.number_of_vertices(); ++v)
+    if(p.is_free[v]) vertices.push_back(static_cast<std::uint32_t>(v));
+  return vertices;
+}
+
 template <int n, class Measure>
 void greedy_sweep(Local_step<n, Measure>& step, Vertex_order order)
 {
@@ -96,11 +117,7 @@ void greedy_sweep(Local_step<n, Measure>& step, Vertex_order order)
   const std::size_t nv = p.number_of_vertices();
 
   if(order == Vertex_order::SORTED_PER_SWEEP) {
-    std::vector<std::pair<double, std::uint32_t>> keyed;
-    for(std::size_t v = 0; v < nv; ++v)
-      if(p.is_free[v]) keyed.emplace_back(step.vertex_distortion(v), static_cast<std::uint32_t>(v));
-    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for(const auto& kv : keyed) step.optimize(kv.second);
+    sorted_sweep(step, free_vertices(p));
     return;
   }
 

@@ -16,6 +16,7 @@
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cofactor.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+#include <CGAL/Distortion_optimization/internal/parallel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -131,25 +132,39 @@ public:
   // ..., cell_at(count - 1) have just moved, the energy was e0. Accepts, and commits their
   // values, if the energy becomes at most e0 + bound (Armijo) by a decrease above the rounding
   // error of e0 (so that accepted moves really decrease the energy) and no positive cell flipped
-  // or flattened (exact predicate).
+  // or flattened (exact predicate). A local trial (workers == nullptr) may run concurrently with
+  // others on disjoint rings; a global one spreads its cells over the workers.
   template <class CellAt>
-  bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound)
+  bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound, const Workers* workers = nullptr)
   {
-    trial_.resize(count);
-    double e = e0;
-    for(std::size_t i = 0; i < count; ++i) {
+    static thread_local std::vector<double> ring_trial;
+    std::vector<double>& trial = workers ? global_trial_ : ring_trial;
+    trial.resize(count);
+    const auto value = [&](std::size_t i) {
       const std::uint32_t c = cell_at(i);
-      trial_[i] = cell_distortion<n>(measure_, p_.map.jacobian(c));
-      e += p_.cell_weight[c] * (trial_[i] - cell_value[c]);
+      trial[i] = cell_distortion<n>(measure_, p_.map.jacobian(c));
+      return p_.cell_weight[c] * (trial[i] - cell_value[c]);
+    };
+    const auto flipped = [&](std::size_t i) { return cell_ok[cell_at(i)] && is_inverted(p_.map, cell_at(i)); };
+    const auto commit = [&](std::size_t i) {
+      const std::uint32_t c = cell_at(i);
+      cell_value[c] = trial[i];
+      if(!cell_ok[c]) cell_ok[c] = !is_inverted(p_.map, c);
+    };
+    const auto either = [](bool a, bool b) { return a || b; };
+    if(workers) {
+      const double e = e0 + workers->sum(count, value);
+      if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
+      if(workers->reduce(count, false, flipped, either)) return false;
+      workers->for_each(count, 1024, commit);
+      return true;
     }
+    double e = e0;
+    for(std::size_t i = 0; i < count; ++i) e += value(i);
     if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
     for(std::size_t i = 0; i < count; ++i)
-      if(cell_ok[cell_at(i)] && is_inverted(p_.map, cell_at(i))) return false;
-    for(std::size_t i = 0; i < count; ++i) {
-      const std::uint32_t c = cell_at(i);
-      cell_value[c] = trial_[i];
-      if(!cell_ok[c]) cell_ok[c] = !is_inverted(p_.map, c);
-    }
+      if(flipped(i)) return false;
+    for(std::size_t i = 0; i < count; ++i) commit(i);
     return true;
   }
 
@@ -213,7 +228,7 @@ private:
   }
 
   std::vector<double> last_step_;   // last accepted step parameter of each vertex
-  std::vector<double> trial_;       // cell values at a trial position
+  std::vector<double> global_trial_;   // cell values at a trial position of a global step
 };
 
 } // namespace internal

@@ -14,8 +14,10 @@
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/global_step.h>
 #include <CGAL/Distortion_optimization/internal/greedy_sweep.h>
+#include <CGAL/Distortion_optimization/internal/independent_set_sweep.h>
 #include <CGAL/Distortion_optimization/internal/local_step.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+#include <CGAL/Distortion_optimization/internal/partitioned_sweep.h>
 
 #include <algorithm>
 #include <chrono>
@@ -36,6 +38,8 @@ struct Options
   Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
   Schedule schedule = Schedule::ALTERNATING;
   bool harmonic_start = true;   // false by default with Schedule::LOCAL (read_options)
+  int threads = 1;
+  Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
   std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
 };
 
@@ -45,6 +49,7 @@ template <int n, class Measure>
 Result minimize(Optimization_problem<n>& problem, const Measure& measure, const Options& options)
 {
   const auto start = std::chrono::steady_clock::now();
+  const Workers workers(options.threads);
   Local_step<n, Measure> step(problem, measure, options.solver);
   for(std::size_t c = 0; c < step.cell_value.size(); ++c) {
     if(std::isnan(step.cell_value[c]))
@@ -64,12 +69,25 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   const bool local = options.schedule != Schedule::GLOBAL, global = options.schedule != Schedule::LOCAL;
   std::unique_ptr<Global_step<n, Measure>> global_step;
   if(global || options.harmonic_start) {
-    global_step = std::make_unique<Global_step<n, Measure>>(problem, measure, step);
+    global_step = std::make_unique<Global_step<n, Measure>>(problem, measure, step, workers);
     if(options.harmonic_start && global_step->harmonic_start())
       energy = std::min(energy, step.energy() * normalization);
   }
+  // One thread: the sequential sweep (Algorithm 2). More: independent sets or Algorithm 3, set up
+  // at the first sweep (after the harmonic start, which moves the map the partition is cut from).
+  std::vector<std::vector<std::uint32_t>> sets;
+  Vertex_partition partition;
+  const auto sweep = [&] {
+    if(workers.threads() == 1) return greedy_sweep(step, options.order);
+    if(options.parallel_sweep == Parallel_sweep::PARTITION) {
+      if(partition.parts.empty()) partition = partition_vertices(problem, workers.threads());
+      return partitioned_sweep(step, partition, workers);
+    }
+    if(sets.empty()) sets = independent_sets(problem, free_vertices(problem));
+    independent_set_sweep(step, sets, workers);
+  };
   while(result.iterations < options.iterations) {
-    if(local) greedy_sweep(step, options.order);
+    if(local) sweep();
     if(global) global_step->step();
     ++result.iterations;
     const double previous = energy;
