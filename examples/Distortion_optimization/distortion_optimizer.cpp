@@ -60,7 +60,8 @@ const char* usage =
   "  NAME         conformal (default), condition, mips, isometric, arap, symmetric_dirichlet,\n"
   "               volume, dirichlet, or a product such as conformal*isometric\n"
   "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
-  "               one 0-based vertex index per line\n"
+  "               one 0-based vertex index per line. With free border vertices the boundary is\n"
+  "               kept from crossing itself (global injectivity)\n"
   "  --iterations largest number of iterations, each a local sweep and a global step (default 100)\n"
   "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
   "               energy above the measure's minimum (default 1e-4)\n"
@@ -204,6 +205,22 @@ void check_same_cells(const std::string& name, const Points& source_points, cons
       throw DO::Invalid_input(name + ": " + cell + " " + std::to_string(k) + " differs from the source's (same connectivity needed)");
 }
 
+// Free-boundary mode (some border vertex free): the run keeps the boundary from crossing itself
+// (global injectivity). A start whose boundary already crosses itself cannot be guarded: then the
+// run goes on without the guard, with a warning.
+template <class Run>
+DO::Result with_boundary_guard(const Command_line& c, const Run& run)
+{
+  if(c.fix == "boundary") return run(false);
+  try {
+    return run(true);
+  } catch(const DO::Invalid_input& guarded) {
+    DO::Result r = run(false);   // throws again if the input was bad for another reason
+    std::cerr << "distortion_optimizer: warning: " << guarded.what() << "; optimized without the guard\n";
+    return r;
+  }
+}
+
 // The options both kinds of mesh share.
 auto common_parameters(const Command_line& c)
 {
@@ -280,11 +297,13 @@ int run_triangles(const Command_line& c)
   std::string measure_name;
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
-    auto np = common_parameters(c).vertex_is_constrained_map(fixed);
-    // A planar source is compared in its own plane (so its orientation counts), a surface in
-    // each triangle's frame.
-    return planar ? CGAL::minimize_distortion(mesh, uv, measure, np.vertex_point_map(source_2))
-                  : CGAL::minimize_distortion(mesh, uv, measure, np);
+    return with_boundary_guard(c, [&](bool guard) {
+      auto np = DO::parameters::preserve_global_injectivity(guard, common_parameters(c)).vertex_is_constrained_map(fixed);
+      // A planar source is compared in its own plane (so its orientation counts), a surface in
+      // each triangle's frame.
+      return planar ? CGAL::minimize_distortion(mesh, uv, measure, np.vertex_point_map(source_2))
+                    : CGAL::minimize_distortion(mesh, uv, measure, np);
+    });
   });
 
   DO::IO::Triangle_soup output;
@@ -335,9 +354,12 @@ int run_tetrahedra(const Command_line& c)
   std::string measure_name;
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
-    return c.fix == "boundary" ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(c))
-                               : CGAL::minimize_distortion(c3t3, target_map, measure,
-                                                           common_parameters(c).vertex_is_constrained_map(fixed));
+    return with_boundary_guard(c, [&](bool guard) {
+      return c.fix == "boundary"
+        ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(c))
+        : CGAL::minimize_distortion(c3t3, target_map, measure,
+            DO::parameters::preserve_global_injectivity(guard, common_parameters(c)).vertex_is_constrained_map(fixed));
+    });
   });
 
   DO::IO::Tetrahedron_soup output = source;

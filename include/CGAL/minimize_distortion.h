@@ -36,6 +36,7 @@ Options read_options(const NamedParameters& np)
   o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
   o.schedule = choose_parameter(get_parameter(np, internal_np::schedule), o.schedule);
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
+  o.global_injectivity = choose_parameter(get_parameter(np, internal_np::preserve_global_injectivity), o.global_injectivity);
   o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
   o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
                                       o.schedule != Schedule::LOCAL);
@@ -120,6 +121,10 @@ flattened (checked with exact predicates); the energy never increases.
     sweep), `GLOBAL` (one preconditioned step of all free vertices) or `ALTERNATING` (default: both)
   - `Distortion_optimization::parameters::use_harmonic_start`: start from the harmonic map of the
     fixed vertices, or from the best safe point towards it; default `true` except with `LOCAL`
+  - `Distortion_optimization::parameters::preserve_global_injectivity`: `true` to keep the map
+    globally injective when boundary vertices are free (a move that would make the target
+    boundary cross itself is shortened; exact predicates); the start map's boundary must not
+    cross itself. Default `false`.
   - `Distortion_optimization::parameters::number_of_threads`: threads for the sweeps and global
     steps when the program links `CGAL::TBB_support`; 0 for all; default 1. The output is
     deterministic for a given number of threads.

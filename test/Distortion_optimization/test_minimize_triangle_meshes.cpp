@@ -279,3 +279,106 @@ TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
     run(DO::Product<DO::Conformal_dilatation, DO::Isometric_dilatation>(), "conformal*isometric");
   }
 }
+
+namespace {
+
+// Pairs of border edges of the target that intersect improperly, by brute force with exact
+// predicates: edges sharing no vertex must be disjoint; edges sharing a vertex must not overlap.
+std::size_t border_self_intersections(const Mesh3& mesh, const Mesh3::Property_map<Mesh3::Vertex_index, Point_2>& uv)
+{
+  std::vector<std::pair<Mesh3::Vertex_index, Mesh3::Vertex_index>> edges;
+  for(auto h : mesh.halfedges())
+    if(mesh.is_border(h)) edges.emplace_back(mesh.source(h), mesh.target(h));
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < edges.size(); ++i)
+    for(std::size_t j = i + 1; j < edges.size(); ++j) {
+      const auto [a, b] = edges[i];
+      const auto [c, d] = edges[j];
+      const K::Segment_2 s(uv[a], uv[b]), t(uv[c], uv[d]);
+      const bool shared = a == c || a == d || b == c || b == d;
+      if(!shared) { count += CGAL::do_intersect(s, t); continue; }
+      // Sharing vertex p: improper iff the other ends are collinear with p on the same side.
+      const auto p = (a == c || a == d) ? a : b;
+      const Point_2& q = uv[p == a ? b : a];
+      const Point_2& r = uv[p == c ? d : c];
+      count += CGAL::collinear(uv[p], q, r) && CGAL::angle(q, uv[p], r) == CGAL::ACUTE;
+    }
+  return count;
+}
+
+} // namespace
+
+// A helical ramp of 1.2 turns (r in [1, 2], z = 0.3 theta): a disk whose flattening wants an
+// annular sector of more than 360 degrees, so an unguarded free-boundary run overlaps its ends.
+static Mesh3 helical_ramp(double turns)
+{
+  const int nr = 6, nt = 120;
+  Mesh3 mesh;
+  std::vector<Mesh3::Vertex_index> v;
+  for(int j = 0; j <= nt; ++j)
+    for(int i = 0; i <= nr; ++i) {
+      const double r = 1 + double(i) / nr, t = 2 * CGAL_PI * turns * j / nt;
+      v.push_back(mesh.add_vertex(Point_3(r * std::cos(t), r * std::sin(t), 0.3 * t)));
+    }
+  auto at = [&](int i, int j) { return v[j * (nr + 1) + i]; };
+  for(int j = 0; j < nt; ++j)
+    for(int i = 0; i < nr; ++i) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return mesh;
+}
+
+TEST(MinimizeDistortion, FreeBoundaryParametrizationStaysGloballyInjective)
+{
+  std::vector<Mesh3> meshes(2);
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("mushroom.off"), meshes[0]));
+  meshes[1] = helical_ramp(1.2);
+  for(std::size_t k = 0; k < meshes.size(); ++k) {
+    Mesh3* mesh = &meshes[k];
+    auto uv = mesh->add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+    DO::initial_parameterization(*mesh, uv);
+    ASSERT_EQ(border_self_intersections(*mesh, uv), 0u);
+    auto none = mesh->add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
+    auto tutte = mesh->add_property_map<Mesh3::Vertex_index, Point_2>("v:tutte").first;
+    for(auto v : mesh->vertices()) tutte[v] = uv[v];
+    for(int threads : {1, 2}) {
+      for(auto v : mesh->vertices()) uv[v] = tutte[v];
+      const auto r = CGAL::minimize_distortion(*mesh, uv, DO::Symmetric_dirichlet(),
+        DO::parameters::preserve_global_injectivity(true, DO::parameters::number_of_threads(threads))
+          .vertex_is_constrained_map(none).number_of_iterations(300));
+      EXPECT_LT(r.final_energy - 1, 0.2 * (r.initial_energy - 1));
+      EXPECT_EQ(r.inverted_cells, 0u);
+      EXPECT_EQ(count_flipped(*mesh, uv), 0u);
+      EXPECT_EQ(border_self_intersections(*mesh, uv), 0u) << threads << " threads";
+    }
+    if(k == 0) continue;   // the real disk's free-boundary optimum is injective anyway
+    // Without the guard the ramp's ends cross: the guard is what prevents it.
+    for(auto v : mesh->vertices()) uv[v] = tutte[v];
+    CGAL::minimize_distortion(*mesh, uv, DO::Symmetric_dirichlet(),
+                              CGAL::parameters::vertex_is_constrained_map(none).number_of_iterations(300));
+    EXPECT_EQ(count_flipped(*mesh, uv), 0u);
+    EXPECT_GT(border_self_intersections(*mesh, uv), 0u);
+  }
+}
+
+TEST(MinimizeDistortion, GuardRejectsAStartWhoseBoundaryCrossesItself)
+{
+  Mesh3 mesh = helical_ramp(1.2);
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  auto none = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
+  DO::initial_parameterization(mesh, uv);
+  CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(),
+                            CGAL::parameters::vertex_is_constrained_map(none).number_of_iterations(300));
+  ASSERT_GT(border_self_intersections(mesh, uv), 0u);
+  std::vector<Point_2> before;
+  for(auto v : mesh.vertices()) before.push_back(uv[v]);
+  try {
+    CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(),
+                              DO::parameters::preserve_global_injectivity(true).vertex_is_constrained_map(none));
+    ADD_FAILURE() << "a self-intersecting start was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("intersects itself"), std::string::npos) << e.what();
+  }
+  for(auto v : mesh.vertices()) EXPECT_EQ(uv[v], before[v.idx()]);
+}

@@ -70,6 +70,7 @@ enum local_solver_t { local_solver };
 enum vertex_order_t { vertex_order };
 enum number_of_threads_t { number_of_threads };
 enum parallel_sweep_t { parallel_sweep };
+enum preserve_global_injectivity_t { preserve_global_injectivity };
 } // namespace internal_np
 
 namespace parameters {
@@ -111,6 +112,12 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(use_harmonic_start_t, use_harmo
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
 /// A `Parallel_sweep`; default `Parallel_sweep::INDEPENDENT_SETS`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_sweep)
+
+/// `bool`: keep the map globally injective when boundary vertices are free (paper section 3.2):
+/// a move that would make the target boundary cross itself is shortened. The start map's
+/// boundary must not intersect itself. Default `false` (with a fixed boundary there is nothing to
+/// guard).
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(preserve_global_injectivity_t, preserve_global_injectivity)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 

@@ -269,10 +269,15 @@ private:
     const std::vector<Vec> x0 = x;
     const double e0 = local_.energy();
     const auto moving_cell = [&](std::size_t i) { return moving_cells_[i]; };
+    Boundary_guard<n>* guard = local_.boundary_guard();
+    const auto boundary_ok = [&] { return !guard || guard->is_injective(x); };
     for(int k = 0; k < 30 && t > 0; ++k, t *= 0.5) {
       workers_.for_each(x.size(), 4096, [&](std::size_t v) { if(p_.is_free[v]) x[v] = x0[v] + t * direction[v]; });
-      if(local_.accept_trial(moving_cells_.size(), moving_cell, e0, Local_step<n, Measure>::armijo * t * slope, &workers_))
+      if(local_.accept_trial(moving_cells_.size(), moving_cell, e0, Local_step<n, Measure>::armijo * t * slope, &workers_,
+                             boundary_ok)) {
+        if(guard) guard->rebuild(x);
         return true;
+      }
     }
     x = x0;
     return false;

@@ -13,6 +13,7 @@
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
 
 #include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/boundary_guard.h>
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cofactor.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
@@ -57,6 +58,11 @@ public:
   std::vector<unsigned char> cell_ok;
 
   const Optimization_problem<n>& problem() const { return p_; }
+
+  // Global injectivity with free boundary vertices (none by default). The guard must have been
+  // built for the current map; vertices on its boundary must then be optimized one at a time.
+  void set_boundary_guard(Boundary_guard<n>* guard) { guard_ = guard; }
+  Boundary_guard<n>* boundary_guard() const { return guard_; }
 
   // E = sum_c w(c) D(J_c) (eq. 25), summed with Neumaier's compensation so that its rounding error
   // stays near one ulp whatever the number of cells (sweep-to-sweep decreases can be that small).
@@ -134,8 +140,10 @@ public:
   // error of e0 (so that accepted moves really decrease the energy) and no positive cell flipped
   // or flattened (exact predicate). A local trial (workers == nullptr) may run concurrently with
   // others on disjoint rings; a global one spreads its cells over the workers.
-  template <class CellAt>
-  bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound, const Workers* workers = nullptr)
+  // A last check, e.g. the boundary guard's, runs before the commit.
+  template <class CellAt, class Check = bool (*)()>
+  bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound, const Workers* workers = nullptr,
+                    const Check& check = [] { return true; })
   {
     static thread_local std::vector<double> ring_trial;
     std::vector<double>& trial = workers ? global_trial_ : ring_trial;
@@ -155,7 +163,7 @@ public:
     if(workers) {
       const double e = e0 + workers->sum(count, value);
       if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
-      if(workers->reduce(count, false, flipped, either)) return false;
+      if(workers->reduce(count, false, flipped, either) || !check()) return false;
       workers->for_each(count, 1024, commit);
       return true;
     }
@@ -164,6 +172,7 @@ public:
     if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
     for(std::size_t i = 0; i < count; ++i)
       if(flipped(i)) return false;
+    if(!check()) return false;
     for(std::size_t i = 0; i < count; ++i) commit(i);
     return true;
   }
@@ -218,15 +227,22 @@ private:
     const Vec x0 = x;
     const std::uint32_t begin = p_.ring_begin[v], end = p_.ring_begin[v + 1];
     const auto ring_cell = [&](std::size_t i) { return p_.ring[begin + i].cell; };
+    // A free boundary vertex under the guard also keeps the boundary free of self-intersections.
+    const bool guarded = guard_ && guard_->is_on_boundary(v);
+    const auto boundary_ok = [&] { return !guarded || guard_->accepts_move(v, p_.map.target); };
     for(int k = 0; k < max_backtracks && t > 0; ++k, t *= 0.5) {
       x = x0 + t * d;
       if(x == x0) break;   // the step no longer changes the position
-      if(accept_trial(end - begin, ring_cell, e0, armijo * t * slope)) return true;
+      if(accept_trial(end - begin, ring_cell, e0, armijo * t * slope, nullptr, boundary_ok)) {
+        if(guarded) guard_->commit_move(v, p_.map.target);
+        return true;
+      }
     }
     x = x0;
     return false;
   }
 
+  Boundary_guard<n>* guard_ = nullptr;
   std::vector<double> last_step_;   // last accepted step parameter of each vertex
   std::vector<double> global_trial_;   // cell values at a trial position of a global step
 };

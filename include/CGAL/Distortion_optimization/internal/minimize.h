@@ -38,6 +38,7 @@ struct Options
   Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
   Schedule schedule = Schedule::ALTERNATING;
   bool harmonic_start = true;   // false by default with Schedule::LOCAL (read_options)
+  bool global_injectivity = false;   // guard the boundary of free boundary vertices
   int threads = 1;
   Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
   std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
@@ -59,6 +60,24 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
                           "measure '" + measure.name() + "' is infinite there: untangle the map first");
   }
 
+  // The guard, only where it has work: some free vertex on the boundary.
+  std::unique_ptr<Boundary_guard<n>> guard;
+  if(options.global_injectivity) {
+    guard = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
+                                                problem.number_of_vertices());
+    bool free_boundary = false;
+    for(std::size_t v = 0; v < problem.number_of_vertices(); ++v)
+      free_boundary = free_boundary || (problem.is_free[v] && guard->is_on_boundary(v));
+    if(free_boundary) {
+      if(!guard->is_injective(problem.map.target))
+        throw Invalid_input("the boundary of the start map intersects itself: global injectivity cannot be preserved");
+      guard->rebuild(problem.map.target);
+      step.set_boundary_guard(guard.get());
+    } else {
+      guard.reset();
+    }
+  }
+
   Result result;
   const double normalization = problem.total_weight > 0 ? 1. / problem.total_weight : 0.;
   double energy = step.energy() * normalization;
@@ -75,16 +94,22 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   }
   // One thread: the sequential sweep (Algorithm 2). More: independent sets or Algorithm 3, set up
   // at the first sweep (after the harmonic start, which moves the map the partition is cut from).
+  // Guarded boundary vertices share the guard, so they are swept one at a time: with Algorithm 3's
+  // interface, or after the independent sets.
+  std::vector<std::uint32_t> parallel_vertices, guarded_vertices;
+  for(std::uint32_t v : free_vertices(problem))
+    (guard && guard->is_on_boundary(v) ? guarded_vertices : parallel_vertices).push_back(v);
   std::vector<std::vector<std::uint32_t>> sets;
   Vertex_partition partition;
   const auto sweep = [&] {
     if(workers.threads() == 1) return greedy_sweep(step, options.order);
     if(options.parallel_sweep == Parallel_sweep::PARTITION) {
-      if(partition.parts.empty()) partition = partition_vertices(problem, workers.threads());
+      if(partition.parts.empty()) partition = partition_vertices(problem, workers.threads(), parallel_vertices, guarded_vertices);
       return partitioned_sweep(step, partition, workers);
     }
-    if(sets.empty()) sets = independent_sets(problem, free_vertices(problem));
+    if(sets.empty()) sets = independent_sets(problem, parallel_vertices);
     independent_set_sweep(step, sets, workers);
+    sorted_sweep(step, guarded_vertices);
   };
   while(result.iterations < options.iterations) {
     if(local) sweep();

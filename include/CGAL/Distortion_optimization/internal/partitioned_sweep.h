@@ -31,9 +31,12 @@ struct Vertex_partition
   std::vector<std::vector<std::uint32_t>> parts;   // the other free vertices, by part
 };
 
-// Cuts the cells of the current map into k slabs along the longest axis of its bounding box.
+// Cuts the cells of the current map into k slabs along the longest axis of its bounding box and
+// sorts the given vertices into parts and interface; `sequential` ones join the interface.
 template <int n>
-Vertex_partition partition_vertices(const Optimization_problem<n>& p, std::size_t k)
+Vertex_partition partition_vertices(const Optimization_problem<n>& p, std::size_t k,
+                                    const std::vector<std::uint32_t>& vertices,
+                                    const std::vector<std::uint32_t>& sequential)
 {
   const auto& map = p.map;
   const std::size_t nc = map.number_of_cells();
@@ -54,7 +57,8 @@ Vertex_partition partition_vertices(const Optimization_problem<n>& p, std::size_
 
   Vertex_partition result;
   result.parts.resize(k);
-  for(std::uint32_t v : free_vertices(p)) {
+  result.interface = sequential;
+  for(std::uint32_t v : vertices) {
     const std::uint32_t begin = p.ring_begin[v], end = p.ring_begin[v + 1];
     bool shared = false;
     for(std::uint32_t r = begin; r < end; ++r) shared = shared || part_of[p.ring[r].cell] != part_of[p.ring[begin].cell];

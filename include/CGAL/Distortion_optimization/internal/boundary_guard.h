@@ -1,0 +1,338 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Global injectivity with a free boundary (section 3.2, Fig. 7): a positively oriented simplicial
+// map is injective iff its boundary (segments in 2D, triangles in 3D) does not self-intersect
+// (Aigerman and Lipman 2013). The guard tells the line search whether a trial position keeps it so.
+//
+// Moving boxes. A small bounding volume hierarchy stores, per face, its box enlarged by a margin
+// (a quarter of its size) at rebuild(). Invariant: each face's current box lies in its stored box,
+// except for the faces of the vertex on trial. A query tests the CURRENT box of the moved vertex's
+// faces against the STORED ones, so no face that may touch them is missed, then runs exact tests
+// (CGAL Epick predicates) on current positions. commit_move() restores the invariant: a face that
+// left its stored box gets a fresh enlarged one and its ancestors grow to contain it (O(log B)
+// refit). Boxes only grow, so after B/4 refits the tree is rebuilt: O(log B) amortized per commit.
+// CGAL::AABB_tree cannot refit a single leaf (and is 3D only), hence this tree; is_injective() runs
+// CGAL::box_self_intersection_d on current boxes. Not thread-safe: queries share scratch space.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
+
+#include <CGAL/Distortion_optimization/internal/svd.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
+#include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Triangle_3_Triangle_3.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+template <int n>
+class Boundary_guard
+{
+  static_assert(n == 2 || n == 3, "segments of a planar triangle map or triangles of a tet map");
+
+public:
+  using Face = std::array<std::uint32_t, n>;
+
+  // The (n-1)-faces that belong to exactly one cell, found by sorting facets by their vertex sets.
+  static std::vector<Face> boundary_faces(const std::vector<std::array<std::uint32_t, n + 1>>& cells)
+  {
+    std::vector<std::pair<Face, Face>> facets;   // (sorted vertices, facet as in its cell)
+    facets.reserve(cells.size() * (n + 1));
+    for(const auto& cell : cells)
+      for(int skip = 0; skip <= n; ++skip) {
+        Face f;
+        for(int j = 0, k = 0; j <= n; ++j)
+          if(j != skip) f[k++] = cell[j];
+        Face key = f;
+        std::sort(key.begin(), key.end());
+        facets.emplace_back(key, f);
+      }
+    std::sort(facets.begin(), facets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Face> result;
+    for(std::size_t i = 0, j; i < facets.size(); i = j) {
+      for(j = i + 1; j < facets.size() && facets[j].first == facets[i].first; ++j) {}
+      if(j == i + 1) result.push_back(facets[i].second);
+    }
+    return result;
+  }
+
+  Boundary_guard(std::vector<Face> faces, std::size_t number_of_vertices)
+    : faces_(std::move(faces)), first_face_(number_of_vertices + 1, 0)
+  {
+    for(const Face& f : faces_)
+      for(std::uint32_t v : f) {
+        CGAL_precondition(v < number_of_vertices);
+        ++first_face_[v + 1];
+      }
+    std::partial_sum(first_face_.begin(), first_face_.end(), first_face_.begin());
+    vertex_faces_.resize(first_face_.back());
+    std::vector<std::size_t> next(first_face_.begin(), first_face_.end() - 1);
+    for(std::uint32_t f = 0; f < faces_.size(); ++f)
+      for(std::uint32_t v : faces_[f]) vertex_faces_[next[v]++] = f;
+  }
+
+  bool empty() const { return faces_.empty(); }
+  bool is_on_boundary(std::size_t v) const { return first_face_[v + 1] > first_face_[v]; }
+
+  // Needed before the first query; any time after (e.g. after a global step).
+  void rebuild(const std::vector<Vector<n>>& target)
+  {
+    const std::size_t B = faces_.size();
+    std::vector<Box> boxes(B);
+    std::vector<Vector<n>> centres(B);
+    degenerate_.resize(B);
+    for(std::uint32_t f = 0; f < B; ++f) {
+      boxes[f] = enlarged(face_box(f, target));
+      centres[f] = boxes[f].center();
+      degenerate_[f] = is_degenerate(f, target);
+    }
+    std::vector<std::uint32_t> order(B);
+    std::iota(order.begin(), order.end(), 0u);
+    nodes_.clear();
+    nodes_.reserve(2 * B);
+    leaf_.assign(B, 0);
+    refits_ = 0;
+    if(B > 0) build(order.data(), order.data() + B, -1, boxes, centres);
+  }
+
+  // Whether the trial position target[v] keeps the boundary injective. Only v may have moved since
+  // the last rebuild() or commit_move(): the state then is assumed injective.
+  bool accepts_move(std::size_t v, const std::vector<Vector<n>>& target)
+  {
+    CGAL_precondition(nodes_.size() == 2 * faces_.size() - (faces_.empty() ? 0 : 1));
+    if(!is_on_boundary(v)) return true;
+    if(!target[v].allFinite()) return false;
+    const std::uint32_t* ring = vertex_faces_.data() + first_face_[v];
+    const std::uint32_t* ring_end = vertex_faces_.data() + first_face_[v + 1];
+    // The ring's faces may have left their stored boxes: test them against each other directly.
+    for(const std::uint32_t* f = ring; f != ring_end; ++f) {
+      if(is_degenerate(*f, target)) return false;
+      for(const std::uint32_t* g = ring; g != f; ++g)
+        if(improper(*f, *g, target)) return false;
+    }
+    // Then one traversal for the whole ring (the star's box), each candidate against each ring face.
+    ring_boxes_.clear();
+    Box star;
+    for(const std::uint32_t* f = ring; f != ring_end; ++f) {
+      ring_boxes_.push_back(face_box(*f, target));
+      star.extend(ring_boxes_.back());
+    }
+    return visit(star, [&](std::uint32_t g) {   // false stops the traversal
+      if(contains(g, v)) return true;
+      const Box box = face_box(g, target);
+      if(!box.intersects(star)) return true;
+      if(degenerate_[g]) return false;
+      for(std::size_t i = 0; i < ring_boxes_.size(); ++i)
+        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target)) return false;
+      return true;
+    });
+  }
+
+  // To call once a move of v is accepted (target holds v's new position).
+  void commit_move(std::size_t v, const std::vector<Vector<n>>& target)
+  {
+    for(std::size_t i = first_face_[v]; i < first_face_[v + 1]; ++i) {
+      const std::uint32_t f = vertex_faces_[i];
+      degenerate_[f] = is_degenerate(f, target);
+      const Box now = face_box(f, target);
+      std::int32_t node = leaf_[f];
+      if(nodes_[node].box.contains(now)) continue;
+      const Box stored = enlarged(now);
+      nodes_[node].box = stored;
+      // Ancestors grow until one already holds the new box (then all above it do too).
+      for(node = nodes_[node].parent; node >= 0 && !nodes_[node].box.contains(stored);
+          node = nodes_[node].parent)
+        nodes_[node].box.extend(stored);
+      ++refits_;
+    }
+    if(refits_ > faces_.size() / 4 + 16) rebuild(target);
+  }
+
+  // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests.
+  bool is_injective(const std::vector<Vector<n>>& target) const
+  {
+    using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
+    std::vector<Box_d> boxes;
+    boxes.reserve(faces_.size());
+    for(std::uint32_t f = 0; f < faces_.size(); ++f) {
+      for(std::uint32_t v : faces_[f])
+        if(!target[v].allFinite()) return false;
+      if(is_degenerate(f, target)) return false;
+      const Box b = face_box(f, target);
+      double lo[n], hi[n];
+      for(int i = 0; i < n; ++i) { lo[i] = b.min()[i]; hi[i] = b.max()[i]; }
+      boxes.emplace_back(lo, hi, f);
+    }
+    bool crossing = false;   // a callback cannot stop box_self_intersection_d: it just skips tests
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box_d& a, const Box_d& b) {
+      if(!crossing && improper(a.info(), b.info(), target)) crossing = true;
+    });
+    return !crossing;
+  }
+
+private:
+  using Box = Eigen::AlignedBox<double, n>;
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  struct Node
+  {
+    Box box;
+    std::int32_t parent;
+    std::array<std::int32_t, 2> child;   // a leaf holds child[0] = -1 - face
+  };
+  static constexpr double margin = 0.25;   // of a face's largest box extent
+
+  std::vector<Face> faces_;
+  std::vector<std::size_t> first_face_;      // faces of v: vertex_faces_[first_face_[v], first_face_[v + 1])
+  std::vector<std::uint32_t> vertex_faces_;
+  std::vector<Node> nodes_;                  // root is nodes_[0]
+  std::vector<std::int32_t> leaf_;           // node of each face
+  std::vector<unsigned char> degenerate_;    // per face, as of its last rebuild() or commit_move()
+  std::size_t refits_ = 0;
+  std::vector<std::int32_t> stack_;          // scratch of accepts_move()
+  std::vector<Box> ring_boxes_;
+
+  Box face_box(std::uint32_t f, const std::vector<Vector<n>>& target) const
+  {
+    Box b(target[faces_[f][0]]);
+    for(int i = 1; i < n; ++i) b.extend(target[faces_[f][i]]);
+    return b;
+  }
+
+  static Box enlarged(Box b)
+  {
+    const double m = margin * b.sizes().maxCoeff();
+    b.min().array() -= m;
+    b.max().array() += m;
+    return b;
+  }
+
+  bool contains(std::uint32_t f, std::size_t v) const
+  {
+    return std::find(faces_[f].begin(), faces_[f].end(), v) != faces_[f].end();
+  }
+
+  // Median split on the longest axis of the centres: depth ceil(log2 B).
+  std::int32_t build(std::uint32_t* begin, std::uint32_t* end, std::int32_t parent,
+                     const std::vector<Box>& boxes, const std::vector<Vector<n>>& centres)
+  {
+    const auto index = static_cast<std::int32_t>(nodes_.size());
+    nodes_.push_back(Node{Box(), parent, {{0, 0}}});
+    if(end - begin == 1) {
+      nodes_[index].box = boxes[*begin];
+      nodes_[index].child[0] = -1 - static_cast<std::int32_t>(*begin);
+      leaf_[*begin] = index;
+      return index;
+    }
+    Box span;
+    for(const std::uint32_t* f = begin; f != end; ++f) span.extend(centres[*f]);
+    int axis = 0;
+    span.sizes().maxCoeff(&axis);
+    std::uint32_t* mid = begin + (end - begin) / 2;
+    std::nth_element(begin, mid, end,
+                     [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
+    const std::int32_t left = build(begin, mid, index, boxes, centres);
+    const std::int32_t right = build(mid, end, index, boxes, centres);
+    nodes_[index].child = {{left, right}};
+    nodes_[index].box = nodes_[left].box.merged(nodes_[right].box);
+    return index;
+  }
+
+  // Calls report(face) for each face whose stored box meets `query` (closed boxes) until it
+  // returns false; returns false iff stopped.
+  template <class Report>
+  bool visit(const Box& query, const Report& report)
+  {
+    if(nodes_.empty()) return true;
+    stack_.assign(1, 0);
+    while(!stack_.empty()) {
+      const Node& node = nodes_[stack_.back()];
+      stack_.pop_back();
+      if(!node.box.intersects(query)) continue;
+      if(node.child[0] < 0) {
+        if(!report(static_cast<std::uint32_t>(-1 - node.child[0]))) return false;
+      } else {
+        stack_.push_back(node.child[0]);
+        stack_.push_back(node.child[1]);
+      }
+    }
+    return true;
+  }
+
+  auto point(std::uint32_t v, const std::vector<Vector<n>>& t) const
+  {
+    if constexpr(n == 2) return K::Point_2(t[v][0], t[v][1]);
+    else return K::Point_3(t[v][0], t[v][1], t[v][2]);
+  }
+
+  // A face with coincident (2D) or collinear (3D) vertices: its cell is degenerate, so no injectivity.
+  bool is_degenerate(std::uint32_t f, const std::vector<Vector<n>>& t) const
+  {
+    const Face& a = faces_[f];
+    if constexpr(n == 2) return t[a[0]] == t[a[1]];
+    else return CGAL::collinear(point(a[0], t), point(a[1], t), point(a[2], t));
+  }
+
+  // Whether two non-degenerate faces meet anywhere but in the vertices (2D) or the edge/vertex (3D)
+  // they share by index. Shared vertices are first moved to the front of both faces, same order.
+  bool improper(std::uint32_t fi, std::uint32_t gi, const std::vector<Vector<n>>& t) const
+  {
+    Face a = faces_[fi], b = faces_[gi];
+    int shared = 0;
+    for(int i = 0; i < n; ++i)
+      for(int j = shared; j < n; ++j)
+        if(a[i] == b[j]) {
+          std::swap(a[i], a[shared]);
+          std::swap(b[j], b[shared]);
+          ++shared;
+          break;
+        }
+    if(shared == n) return false;   // the same face listed twice
+    if constexpr(n == 2) {
+      const K::Point_2 s = point(a[0], t), q = point(a[1], t), r = point(b[1], t);
+      if(shared == 0) return CGAL::do_intersect(K::Segment_2(s, q), K::Segment_2(r, point(b[0], t)));
+      // (s, q) and (s, r) meet beyond s iff q and r lie on the same ray from s.
+      return CGAL::orientation(s, q, r) == CGAL::COLLINEAR &&
+             (CGAL::collinear_are_ordered_along_line(s, q, r) ||
+              CGAL::collinear_are_ordered_along_line(s, r, q));
+    } else {
+      const K::Point_3 a0 = point(a[0], t), a1 = point(a[1], t), a2 = point(a[2], t);
+      const K::Point_3 b0 = point(b[0], t), b1 = point(b[1], t), b2 = point(b[2], t);
+      if(shared == 0) return CGAL::do_intersect(K::Triangle_3(a0, a1, a2), K::Triangle_3(b0, b1, b2));
+      // Sharing edge a0a1: unless coplanar the planes meet in that edge's line only; coplanar, the
+      // triangles overlap iff a2 and b2 are not strictly on opposite sides of it.
+      if(shared == 2)
+        return CGAL::orientation(a0, a1, a2, b2) == CGAL::COPLANAR &&
+               CGAL::coplanar_orientation(a0, a1, a2, b2) != CGAL::NEGATIVE;
+      // Sharing vertex a0: one triangle strictly on one side of the other's plane but for a0 is fine.
+      const CGAL::Orientation o1 = CGAL::orientation(a0, a1, a2, b1);
+      if(o1 != CGAL::COPLANAR && o1 == CGAL::orientation(a0, a1, a2, b2)) return false;
+      const CGAL::Orientation o2 = CGAL::orientation(b0, b1, b2, a1);
+      if(o2 != CGAL::COPLANAR && o2 == CGAL::orientation(b0, b1, b2, a2)) return false;
+      // Otherwise, if they meet at x != a0, the shorter of the two chords from a0 towards x ends on
+      // its triangle's edge opposite a0, inside the other triangle (and conversely).
+      return CGAL::do_intersect(K::Segment_3(a1, a2), K::Triangle_3(b0, b1, b2)) ||
+             CGAL::do_intersect(K::Segment_3(b1, b2), K::Triangle_3(a0, a1, a2));
+    }
+  }
+};
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H

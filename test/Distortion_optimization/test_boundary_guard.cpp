@@ -1,0 +1,483 @@
+// Boundary_guard: boundary extraction, exact accept/reject of boundary moves, soundness after the
+// stored boxes drift, and agreement with a brute-force all-pairs check (exact constructions).
+
+#include <CGAL/Distortion_optimization/internal/boundary_guard.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
+#include <CGAL/Intersections_3/Triangle_3_Triangle_3.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace {
+
+namespace DOI = CGAL::Distortion_optimization::internal;
+using DOI::Vector;
+using Guard2 = DOI::Boundary_guard<2>;
+using Guard3 = DOI::Boundary_guard<3>;
+using Index = std::uint32_t;
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+template <int n>
+struct Map
+{
+  std::vector<Vector<n>> target;
+  std::vector<std::array<Index, n + 1>> cells;
+};
+
+// k x k vertices at integer points (i, j), vertex i + k j, two triangles per square.
+Map<2> grid_2(int k)
+{
+  Map<2> m;
+  for(int j = 0; j < k; ++j)
+    for(int i = 0; i < k; ++i) m.target.emplace_back(i, j);
+  for(int j = 0; j + 1 < k; ++j)
+    for(int i = 0; i + 1 < k; ++i) {
+      const Index a = i + k * j, b = a + 1, c = a + k, d = c + 1;
+      m.cells.push_back({a, b, d});
+      m.cells.push_back({a, d, c});
+    }
+  return m;
+}
+
+// k^3 unit cubes at integer points, vertex i + (k+1) (j + (k+1) l), each cube split into the 6
+// Kuhn tetrahedra along its main diagonal (a conforming mesh).
+Map<3> grid_3(int k)
+{
+  Map<3> m;
+  const int s = k + 1;
+  for(int l = 0; l < s; ++l)
+    for(int j = 0; j < s; ++j)
+      for(int i = 0; i < s; ++i) m.target.emplace_back(i, j, l);
+  auto id = [s](int i, int j, int l) { return Index(i + s * (j + s * l)); };
+  for(int l = 0; l < k; ++l)
+    for(int j = 0; j < k; ++j)
+      for(int i = 0; i < k; ++i) {
+        std::array<int, 3> axes = {0, 1, 2};
+        do {
+          std::array<int, 3> c = {i, j, l};
+          std::array<Index, 4> cell;
+          cell[0] = id(c[0], c[1], c[2]);
+          for(int step = 0; step < 3; ++step) {
+            ++c[axes[step]];
+            cell[step + 1] = id(c[0], c[1], c[2]);
+          }
+          m.cells.push_back(cell);
+        } while(std::next_permutation(axes.begin(), axes.end()));
+      }
+  return m;
+}
+
+template <std::size_t m>
+std::set<std::array<Index, m>> sorted_set(const std::vector<std::array<Index, m>>& faces)
+{
+  std::set<std::array<Index, m>> result;
+  for(auto f : faces) {
+    std::sort(f.begin(), f.end());
+    result.insert(f);
+  }
+  return result;
+}
+
+// Brute force: every pair of faces intersected with exact constructions; a pair is improper unless
+// the intersection is empty or exactly the vertex / edge the two faces share by index.
+bool brute_force_injective(const std::vector<Guard2::Face>& faces, const std::vector<Vector<2>>& t)
+{
+  auto p = [&](Index v) { return EK::Point_2(t[v][0], t[v][1]); };
+  auto box = [&](const Guard2::Face& f) { return p(f[0]).bbox() + p(f[1]).bbox(); };   // exact: double input
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(std::size_t j = i + 1; j < faces.size(); ++j) {
+      const auto &a = faces[i], &b = faces[j];
+      std::vector<Index> shared;
+      for(Index u : a)
+        if(std::find(b.begin(), b.end(), u) != b.end()) shared.push_back(u);
+      if(shared.size() == 2 || !CGAL::do_overlap(box(a), box(b))) continue;
+      const auto x = CGAL::intersection(EK::Segment_2(p(a[0]), p(a[1])), EK::Segment_2(p(b[0]), p(b[1])));
+      if(!x) continue;
+      const EK::Point_2* point = boost::get<EK::Point_2>(&*x);
+      if(point == nullptr || shared.empty() || *point != p(shared[0])) return false;
+    }
+  return true;
+}
+
+// Only the pairs with a face of `moved` when given (the exact constructions are slow in 3D).
+bool brute_force_injective(const std::vector<Guard3::Face>& faces, const std::vector<Vector<3>>& t,
+                           const Index* moved = nullptr)
+{
+  auto p = [&](Index v) { return EK::Point_3(t[v][0], t[v][1], t[v][2]); };
+  auto box = [&](const Guard3::Face& f) { return p(f[0]).bbox() + p(f[1]).bbox() + p(f[2]).bbox(); };   // exact too
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(std::size_t j = i + 1; j < faces.size(); ++j) {
+      const auto &a = faces[i], &b = faces[j];
+      auto has_moved = [&](const Guard3::Face& f) { return std::find(f.begin(), f.end(), *moved) != f.end(); };
+      if(moved != nullptr && !has_moved(a) && !has_moved(b)) continue;
+      std::vector<Index> shared;
+      for(Index u : a)
+        if(std::find(b.begin(), b.end(), u) != b.end()) shared.push_back(u);
+      const EK::Triangle_3 ta(p(a[0]), p(a[1]), p(a[2])), tb(p(b[0]), p(b[1]), p(b[2]));
+      if(ta.is_degenerate() || tb.is_degenerate()) return false;
+      if(!CGAL::do_overlap(box(a), box(b))) continue;
+      const auto x = CGAL::intersection(ta, tb);
+      if(!x) continue;
+      if(shared.size() == 1) {
+        const EK::Point_3* point = boost::get<EK::Point_3>(&*x);
+        if(point == nullptr || *point != p(shared[0])) return false;
+      } else if(shared.size() == 2) {
+        const EK::Segment_3* segment = boost::get<EK::Segment_3>(&*x);
+        const EK::Segment_3 edge(p(shared[0]), p(shared[1]));
+        if(segment == nullptr || (*segment != edge && *segment != edge.opposite())) return false;
+      } else {
+        return false;
+      }
+    }
+  return true;
+}
+
+template <class Guard>
+std::vector<Index> boundary_vertices(std::size_t number_of_vertices, const Guard& guard)
+{
+  std::vector<Index> result;
+  for(Index v = 0; v < number_of_vertices; ++v)
+    if(guard.is_on_boundary(v)) result.push_back(v);
+  return result;
+}
+
+} // namespace
+
+TEST(BoundaryGuard, BoundaryFacesOfTwoTrianglesAndTwoTets)
+{
+  const auto square = Guard2::boundary_faces({{0, 1, 2}, {0, 2, 3}});
+  EXPECT_EQ(square.size(), 4u);
+  EXPECT_EQ(sorted_set(square), (std::set<std::array<Index, 2>>{{0, 1}, {1, 2}, {2, 3}, {0, 3}}));
+
+  const auto tets = Guard3::boundary_faces({{0, 1, 2, 3}, {1, 2, 3, 4}});
+  EXPECT_EQ(tets.size(), 6u);
+  EXPECT_EQ(sorted_set(tets), (std::set<std::array<Index, 3>>{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 4},
+                                                              {1, 3, 4}, {2, 3, 4}}));
+  EXPECT_EQ(Guard3::boundary_faces(grid_3(2).cells).size(), 6u * 4 * 2);
+
+  Guard2 guard(square, 5);
+  EXPECT_FALSE(guard.empty());
+  EXPECT_TRUE(guard.is_on_boundary(3));
+  EXPECT_FALSE(guard.is_on_boundary(4));
+  EXPECT_TRUE(Guard2({}, 3).empty());
+}
+
+TEST(BoundaryGuard, PlanarCrossingAndSmallMove)
+{
+  Map<2> m = grid_2(5);   // [0, 4]^2
+  Guard2 guard(Guard2::boundary_faces(m.cells), m.target.size());
+  ASSERT_EQ(boundary_vertices(m.target.size(), guard).size(), 16u);
+  guard.rebuild(m.target);
+  EXPECT_TRUE(guard.is_injective(m.target));
+
+  const Index left_middle = 0 + 5 * 2;
+  const Vector<2> rest = m.target[left_middle];
+  m.target[left_middle] = Vector<2>(5, 2);   // beyond the right side
+  EXPECT_FALSE(guard.accepts_move(left_middle, m.target));
+  EXPECT_FALSE(guard.is_injective(m.target));
+  m.target[left_middle] = Vector<2>(4, 2);   // onto the right side's vertex
+  EXPECT_FALSE(guard.accepts_move(left_middle, m.target));
+  m.target[left_middle] = Vector<2>(3.999, 2);   // inside, touching nothing
+  EXPECT_TRUE(guard.accepts_move(left_middle, m.target));
+  m.target[left_middle] = rest + Vector<2>(-0.1, 0.05);
+  EXPECT_TRUE(guard.accepts_move(left_middle, m.target));
+  EXPECT_TRUE(guard.is_injective(m.target));
+  EXPECT_TRUE(guard.accepts_move(2 * 5 + 2, m.target));   // an interior vertex never matters
+}
+
+TEST(BoundaryGuard, AdjacentSegmentsOverlappingCollinearly)
+{
+  // One triangle: its three boundary segments are pairwise adjacent.
+  std::vector<Vector<2>> t = {Vector<2>(0, 0), Vector<2>(4, 0), Vector<2>(0, 4)};
+  Guard2 guard(Guard2::boundary_faces({{0, 1, 2}}), 3);
+  guard.rebuild(t);
+  t[2] = Vector<2>(2, 0);   // folded onto segment 01
+  EXPECT_FALSE(guard.accepts_move(2, t));
+  EXPECT_FALSE(guard.is_injective(t));
+  t[2] = Vector<2>(6, 0);   // beyond vertex 1 on the same line
+  EXPECT_FALSE(guard.accepts_move(2, t));
+  t[2] = Vector<2>(0, 0);   // onto vertex 0
+  EXPECT_FALSE(guard.accepts_move(2, t));
+  t[2] = Vector<2>(2, 1e-300);   // exact predicates see it off the line
+  EXPECT_TRUE(guard.accepts_move(2, t));
+  EXPECT_TRUE(guard.is_injective(t));
+  t[2] = Vector<2>(2, -1e-300);   // inverted, but the boundary alone is still a simple polygon
+  EXPECT_TRUE(guard.accepts_move(2, t));
+
+  // An open polyline: the only pair is the moved vertex's own two segments.
+  std::vector<Vector<2>> line = {Vector<2>(0, 0), Vector<2>(1, 0), Vector<2>(2, 0)};
+  Guard2 open({{0, 1}, {1, 2}}, 3);
+  open.rebuild(line);
+  EXPECT_TRUE(open.accepts_move(1, line));
+  line[1] = Vector<2>(3, 0);   // both segments now leave vertex 1 towards -x
+  EXPECT_FALSE(open.accepts_move(1, line));
+  EXPECT_FALSE(open.is_injective(line));
+  line[1] = Vector<2>(3, 1e-300);
+  EXPECT_TRUE(open.accepts_move(1, line));
+
+  // A collapsed segment is rejected even with nothing else around (its cell is degenerate).
+  std::vector<Vector<2>> ends = {Vector<2>(0, 0), Vector<2>(1, 0)};
+  Guard2 single({{0, 1}}, 2);
+  single.rebuild(ends);
+  EXPECT_TRUE(single.is_injective(ends));
+  ends[1] = ends[0];
+  EXPECT_FALSE(single.accepts_move(1, ends));
+  EXPECT_FALSE(single.is_injective(ends));
+
+  // Collinear neighbours on opposite sides of the shared vertex are fine (the grid's straight sides).
+  Map<2> m = grid_2(3);
+  Guard2 grid(Guard2::boundary_faces(m.cells), m.target.size());
+  grid.rebuild(m.target);
+  EXPECT_TRUE(grid.accepts_move(1, m.target));
+  m.target[1] = Vector<2>(-0.5, 0);   // bottom middle slides past the corner: its two segments fold
+  EXPECT_FALSE(grid.accepts_move(1, m.target));
+}
+
+TEST(BoundaryGuard, SoundAfterDriftBeyondTheMargin)
+{
+  Map<2> m = grid_2(6);   // [0, 5]^2, 20 boundary segments
+  Guard2 guard(Guard2::boundary_faces(m.cells), m.target.size());
+  guard.rebuild(m.target);
+  const std::vector<Index> boundary = boundary_vertices(m.target.size(), guard);
+  // Translate the boundary by (40, 25) in small accepted moves, one vertex at a time: every stored
+  // box is left behind many times (refits, then rebuilds).
+  for(int round = 0; round < 400; ++round)
+    for(Index v : boundary) {
+      m.target[v] += Vector<2>(0.1, 0.0625);
+      ASSERT_TRUE(guard.accepts_move(v, m.target)) << round;
+      guard.commit_move(v, m.target);
+    }
+  EXPECT_TRUE(guard.is_injective(m.target));
+  const Index left_middle = 0 + 6 * 2, right_middle = 5 + 6 * 2;
+  m.target[left_middle] = m.target[right_middle] + Vector<2>(1, 0);
+  EXPECT_FALSE(guard.accepts_move(left_middle, m.target));
+  m.target[left_middle] = m.target[right_middle] - Vector<2>(0.5, 0);
+  EXPECT_TRUE(guard.accepts_move(left_middle, m.target));
+
+  // A chunk of the bottom side of a long polygon sinks by 15 (its faces are refit, too few of them
+  // for a rebuild); the tree must then find them where they are, far from any box built at first.
+  const int k = 300;
+  std::vector<Vector<2>> p;
+  std::vector<Guard2::Face> polygon;
+  for(int i = 0; i < 4 * k; ++i) {
+    const int side = i / k, step = i % k;
+    const Vector<2> corner[] = {Vector<2>(0, 0), Vector<2>(k, 0), Vector<2>(k, k), Vector<2>(0, k)};
+    const Vector<2> along[] = {Vector<2>(1, 0), Vector<2>(0, 1), Vector<2>(-1, 0), Vector<2>(0, -1)};
+    p.push_back(corner[side] + step * along[side]);
+    polygon.push_back({Index(i), Index((i + 1) % (4 * k))});
+  }
+  Guard2 sink(polygon, p.size());
+  sink.rebuild(p);
+  const Index c = k / 2;   // the chunk is c - 2, ..., c + 2 at (c - 2, 0), ..., (c + 2, 0)
+  for(int round = 0; round < 150; ++round)
+    for(Index v = c - 2; v <= c + 2; ++v) {
+      p[v] += Vector<2>(0, -0.1);
+      ASSERT_TRUE(sink.accepts_move(v, p)) << round;
+      sink.commit_move(v, p);
+    }
+  for(int step = 0; step < 10; ++step) {   // a bump at c + 1
+    p[c + 1] += Vector<2>(0, 0.1);
+    ASSERT_TRUE(sink.accepts_move(c + 1, p));
+    sink.commit_move(c + 1, p);
+  }
+  const double y = p[c][1];
+  ASSERT_NEAR(y, -15, 1e-9);
+  ASSERT_NEAR(p[c + 1][1], -14, 1e-9);
+  // Segment (c - 2, c - 1) crosses (c, c + 1), which shares no vertex with it; the own segments of
+  // c - 1 stay apart, so only the tree can see this.
+  p[c - 1] = Vector<2>(c + 1, y + 0.5);
+  EXPECT_FALSE(sink.accepts_move(c - 1, p));
+  EXPECT_FALSE(sink.is_injective(p));
+  p[c - 1] = p[c + 2];   // onto a vertex of segments it shares no vertex with
+  EXPECT_FALSE(sink.accepts_move(c - 1, p));
+  p[c - 1] = Vector<2>(c - 1, y - 0.5);
+  EXPECT_TRUE(sink.accepts_move(c - 1, p));
+  EXPECT_TRUE(sink.is_injective(p));
+}
+
+TEST(BoundaryGuard, AgreesWithBruteForceOnRandomPlanarMoves)
+{
+  Map<2> m = grid_2(8);
+  const auto faces = Guard2::boundary_faces(m.cells);
+  Guard2 guard(faces, m.target.size());
+  guard.rebuild(m.target);
+  const std::vector<Index> boundary = boundary_vertices(m.target.size(), guard);
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<std::size_t> pick(0, boundary.size() - 1);
+  std::uniform_real_distribution<double> small(-0.4, 0.4), large(-8, 8);
+  std::uniform_int_distribution<int> kind(0, 3), lattice(-4, 18);
+  int accepted = 0, rejected = 0;
+  for(int move = 0; move < 600; ++move) {
+    const Index v = boundary[pick(rng)];
+    const Vector<2> before = m.target[v];
+    switch(kind(rng)) {
+      case 0: m.target[v] += Vector<2>(small(rng), small(rng)); break;
+      case 1: m.target[v] += Vector<2>(large(rng), large(rng)); break;
+      case 2: m.target[v] = Vector<2>(lattice(rng), lattice(rng)) / 2; break;   // exact degeneracies
+      default: {   // onto another boundary vertex or the midpoint of one of its segments
+        const auto& f = faces[pick(rng) % faces.size()];
+        m.target[v] = rng() % 2 ? m.target[f[0]] : Vector<2>((m.target[f[0]] + m.target[f[1]]) / 2);
+      }
+    }
+    const bool expected = brute_force_injective(faces, m.target);
+    ASSERT_EQ(guard.accepts_move(v, m.target), expected) << "move " << move;
+    ASSERT_EQ(guard.is_injective(m.target), expected) << "move " << move;
+    if(expected) {
+      guard.commit_move(v, m.target);
+      ++accepted;
+    } else {
+      m.target[v] = before;
+      ++rejected;
+    }
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 100);
+}
+
+TEST(BoundaryGuard, TetBoundaryPushedThroughTheOppositeFace)
+{
+  Map<3> m = grid_3(2);   // [0, 2]^3
+  Guard3 guard(Guard3::boundary_faces(m.cells), m.target.size());
+  guard.rebuild(m.target);
+  EXPECT_TRUE(guard.is_injective(m.target));
+  const Index face_centre = 0 + 3 * (1 + 3 * 1);   // (0, 1, 1)
+  ASSERT_TRUE(guard.is_on_boundary(face_centre));
+  EXPECT_FALSE(guard.is_on_boundary(1 + 3 * (1 + 3 * 1)));
+  m.target[face_centre] = Vector<3>(3, 1, 1);
+  EXPECT_FALSE(guard.accepts_move(face_centre, m.target));
+  EXPECT_FALSE(guard.is_injective(m.target));
+  m.target[face_centre] = Vector<3>(2, 1, 1);   // onto the opposite face's centre
+  EXPECT_FALSE(guard.accepts_move(face_centre, m.target));
+  m.target[face_centre] = Vector<3>(1.9, 1, 1);
+  EXPECT_TRUE(guard.accepts_move(face_centre, m.target));
+  m.target[face_centre] = Vector<3>(-0.1, 1.05, 0.95);
+  EXPECT_TRUE(guard.accepts_move(face_centre, m.target));
+  EXPECT_TRUE(guard.is_injective(m.target));
+  EXPECT_TRUE(brute_force_injective(Guard3::boundary_faces(m.cells), m.target));
+}
+
+TEST(BoundaryGuard, TrianglesSharingAnEdgeOrAVertex)
+{
+  // One tet: its four boundary triangles pairwise share an edge.
+  std::vector<Vector<3>> t = {Vector<3>(0, 0, 0), Vector<3>(4, 0, 0), Vector<3>(0, 4, 0), Vector<3>(0, 0, 4)};
+  Guard3 tet(Guard3::boundary_faces({{0, 1, 2, 3}}), 4);
+  tet.rebuild(t);
+  t[3] = Vector<3>(1, 1, 0);   // coplanar fold into triangle 012
+  EXPECT_FALSE(tet.accepts_move(3, t));
+  EXPECT_FALSE(tet.is_injective(t));
+  t[3] = Vector<3>(1, 1, 1e-300);
+  EXPECT_TRUE(tet.accepts_move(3, t));
+  t[3] = Vector<3>(2, 0, 0);   // onto edge 01: a degenerate face
+  EXPECT_FALSE(tet.accepts_move(3, t));
+
+  // A lone triangle made collinear is rejected.
+  std::vector<Vector<3>> lone = {Vector<3>(0, 0, 0), Vector<3>(1, 0, 0), Vector<3>(0, 1, 0)};
+  Guard3 one({{0, 1, 2}}, 3);
+  one.rebuild(lone);
+  EXPECT_TRUE(one.accepts_move(2, lone));
+  lone[2] = Vector<3>(3, 0, 0);
+  EXPECT_FALSE(one.accepts_move(2, lone));
+  EXPECT_FALSE(one.is_injective(lone));
+
+  // An open surface of two triangles on edge 01: only the moved vertex's own pair can fold.
+  std::vector<Vector<3>> w = {Vector<3>(0, 0, 0), Vector<3>(4, 0, 0), Vector<3>(0, 4, 0), Vector<3>(0, -4, 0)};
+  Guard3 hinge({{0, 1, 2}, {0, 1, 3}}, 4);
+  hinge.rebuild(w);
+  EXPECT_TRUE(hinge.accepts_move(3, w));   // flat but unfolded
+  w[3] = Vector<3>(1, 1, 0);
+  EXPECT_FALSE(hinge.accepts_move(3, w));
+  EXPECT_FALSE(hinge.is_injective(w));
+  w[3] = Vector<3>(1, 1, 1);
+  EXPECT_TRUE(hinge.accepts_move(3, w));
+
+  // Two triangles sharing vertex 0 where only edge 12 pierces triangle 034, not edge 34 triangle 012.
+  const std::vector<Vector<3>> x = {Vector<3>(0, 0, 0), Vector<3>(2, 0, -1), Vector<3>(2, 0, 1),
+                                    Vector<3>(3, -1, 0), Vector<3>(3, 1, 0)};
+  Guard3 fan({{0, 1, 2}, {0, 3, 4}}, 5);
+  fan.rebuild(x);
+  for(Index v = 0; v < 5; ++v) EXPECT_FALSE(fan.accepts_move(v, x)) << v;
+  EXPECT_FALSE(fan.is_injective(x));
+  Guard3 fan_swapped({{0, 3, 4}, {0, 1, 2}}, 5);
+  fan_swapped.rebuild(x);
+  EXPECT_FALSE(fan_swapped.is_injective(x));
+  EXPECT_FALSE(fan_swapped.accepts_move(3, x));
+
+  // Coplanar triangles sharing vertex 0: overlapping, then apart, then on opposite rays from 0.
+  std::vector<Vector<3>> y = {Vector<3>(0, 0, 0), Vector<3>(4, 0, 0), Vector<3>(0, 4, 0), Vector<3>(4, 1, 0),
+                              Vector<3>(1, 4, 0)};
+  Guard3 flat({{0, 1, 2}, {0, 3, 4}}, 5);
+  flat.rebuild(y);
+  EXPECT_FALSE(flat.accepts_move(3, y));
+  EXPECT_FALSE(flat.is_injective(y));
+  y[3] = Vector<3>(-4, -1, 0);
+  y[4] = Vector<3>(-1, -4, 0);
+  EXPECT_TRUE(flat.accepts_move(3, y));
+  EXPECT_TRUE(flat.is_injective(y));
+  y[3] = Vector<3>(-4, 0, 0);
+  y[4] = Vector<3>(0, -4, 0);
+  EXPECT_TRUE(flat.accepts_move(4, y));
+  y[3] = Vector<3>(1, 0, 0);   // along edge 01
+  EXPECT_FALSE(flat.accepts_move(3, y));
+
+  // Two tets sharing vertex 0, mirror images: they touch only there.
+  std::vector<Vector<3>> u = {Vector<3>(0, 0, 0),  Vector<3>(1, 0, 0),  Vector<3>(0, 1, 0), Vector<3>(0, 0, 1),
+                              Vector<3>(-1, 0, 0), Vector<3>(0, -1, 0), Vector<3>(0, 0, -1)};
+  const auto faces = Guard3::boundary_faces({{0, 1, 2, 3}, {0, 4, 5, 6}});
+  ASSERT_EQ(faces.size(), 8u);
+  Guard3 pair(faces, u.size());
+  pair.rebuild(u);
+  EXPECT_TRUE(pair.is_injective(u));
+  u[4] = Vector<3>(0.2, 0.2, 0.2);   // edge 45 pierces face 013
+  EXPECT_FALSE(pair.accepts_move(4, u));
+  EXPECT_FALSE(brute_force_injective(faces, u));
+  u[4] = Vector<3>(0.5, 0, 0);   // onto edge 01: the tets share a segment
+  EXPECT_FALSE(pair.accepts_move(4, u));
+  u[4] = Vector<3>(0.5, -1e-300, 0);   // just off it: only vertex 0 is shared again
+  EXPECT_TRUE(pair.accepts_move(4, u));
+  EXPECT_TRUE(pair.is_injective(u));
+  EXPECT_TRUE(brute_force_injective(faces, u));
+}
+
+TEST(BoundaryGuard, AgreesWithBruteForceOnRandomTetBoundaryMoves)
+{
+  Map<3> m = grid_3(2);
+  const auto faces = Guard3::boundary_faces(m.cells);
+  Guard3 guard(faces, m.target.size());
+  guard.rebuild(m.target);
+  const std::vector<Index> boundary = boundary_vertices(m.target.size(), guard);
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<std::size_t> pick(0, boundary.size() - 1);
+  std::uniform_real_distribution<double> small(-0.3, 0.3), large(-3, 3);
+  std::uniform_int_distribution<int> kind(0, 2), lattice(-2, 6);
+  int accepted = 0, rejected = 0;
+  for(int move = 0; move < 300; ++move) {
+    const Index v = boundary[pick(rng)];
+    const Vector<3> before = m.target[v];
+    switch(kind(rng)) {
+      case 0: m.target[v] += Vector<3>(small(rng), small(rng), small(rng)); break;
+      case 1: m.target[v] += Vector<3>(large(rng), large(rng), large(rng)); break;
+      default: m.target[v] = Vector<3>(lattice(rng), lattice(rng), lattice(rng)) / 2;   // exact degeneracies
+    }
+    const bool expected = brute_force_injective(faces, m.target, &v);   // the state before was injective
+    ASSERT_EQ(guard.accepts_move(v, m.target), expected) << "move " << move;
+    ASSERT_EQ(guard.is_injective(m.target), expected) << "move " << move;
+    if(expected) {
+      guard.commit_move(v, m.target);
+      ++accepted;
+    } else {
+      m.target[v] = before;
+      ++rejected;
+    }
+  }
+  EXPECT_TRUE(brute_force_injective(faces, m.target));
+  EXPECT_GT(accepted, 50);
+  EXPECT_GT(rejected, 50);
+}
