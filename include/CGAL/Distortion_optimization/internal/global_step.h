@@ -8,7 +8,7 @@
 //  - The global step d = -P^-1 g, with P the volume-weighted cotangent Laplacian of the source
 //    reweighted per cell by a factor of the cell's smallest singular value (the measure's
 //    `laplacian_weight`, in the spirit of the reweighted proxies of SLIM, Rabinovich et al. 2017),
-//    solved by warm-started Jacobi-preconditioned CG to a loose tolerance. The step is capped at
+//    solved by warm-started Jacobi-preconditioned CG to a loose tolerance (one column per thread). The step is capped at
 //    0.9 times the exact largest step before a cell degenerates (per cell, det(Ds + t dDs) is a
 //    quadratic in 2D, a cubic in 3D: its smallest positive root), then backtracks (Armijo), and is
 //    accepted only if CGAL's exact orientation predicate sees no flipped cell.
@@ -110,19 +110,13 @@ public:
     if(free_count_ == 0) return false;
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_count_, n), x(free_count_, n);
     refill(nullptr, &rhs);
-    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
-                             Eigen::IncompleteCholesky<double>> solver;
-    solver.setTolerance(1e-10);
-    solver.setMaxIterations(2000);
-    solver.compute(P_);
-    if(solver.info() != Eigen::Success) return false;
+    Eigen::IncompleteCholesky<double> preconditioner;
+    preconditioner.compute(P_);
+    if(preconditioner.info() != Eigen::Success) return false;
     std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
-    for(int d = 0; d < n; ++d) {
-      Eigen::VectorXd guess(free_count_);
-      for(std::size_t v = 0; v < direction.size(); ++v)
-        if(free_index_[v] >= 0) guess[free_index_[v]] = p_.map.target[v][d];
-      x.col(d) = solver.solveWithGuess(rhs.col(d), guess);
-    }
+    for(std::size_t v = 0; v < direction.size(); ++v)
+      if(free_index_[v] >= 0) x.row(free_index_[v]) = p_.map.target[v].transpose();
+    solve(preconditioner, rhs, x, 2000, 1e-10);
     if(!x.allFinite()) return false;   // a free part with no fixed vertex: no harmonic map
     for(std::size_t v = 0; v < direction.size(); ++v)
       if(free_index_[v] >= 0) direction[v] = x.row(free_index_[v]).transpose() - p_.map.target[v];
@@ -139,11 +133,10 @@ public:
     if(free_count_ == 0) return false;
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(free_count_, n);
     refill(&g, nullptr);
-    solver_.setMaxIterations(30);
-    solver_.setTolerance(1e-2);
-    solver_.compute(P_);
-    Eigen::MatrixXd x(free_count_, n);
-    for(int d = 0; d < n; ++d) x.col(d) = solver_.solveWithGuess(-g.col(d), previous_solution_.col(d));
+    Eigen::DiagonalPreconditioner<double> preconditioner;
+    preconditioner.compute(P_);
+    Eigen::MatrixXd x = previous_solution_;
+    solve(preconditioner, -g, x, 30, 1e-2);
     if(!x.allFinite()) return false;
     previous_solution_ = x;
     double slope = 0;
@@ -241,6 +234,21 @@ private:
     }
   }
 
+  // Solves P X = B by conjugate gradients from the guess in X, to the given relative residual or
+  // number of iterations; the n columns are independent solves, one per thread.
+  template <class Preconditioner>
+  void solve(const Preconditioner& preconditioner, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+             Eigen::Index iterations, double tolerance) const
+  {
+    workers_.for_each(n, 1, [&](std::size_t d) {
+      Eigen::VectorXd column = X.col(d);
+      Eigen::Index its = iterations;
+      double error = tolerance;
+      Eigen::internal::conjugate_gradient(P_, B.col(d), column, preconditioner, its, error);
+      X.col(d) = column;
+    });
+  }
+
   // The exact largest t <= bound such that no valid cell degenerates at X + t D.
   double max_step(const std::vector<Vec>& direction, double bound) const
   {
@@ -292,7 +300,6 @@ private:
   std::vector<std::uint32_t> moving_cells_;
   Eigen::SparseMatrix<double> P_;
   std::vector<int> slots_;
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver_;
   Eigen::MatrixXd previous_solution_;
   double last_t_ = 0;
 };
