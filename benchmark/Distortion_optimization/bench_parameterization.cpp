@@ -6,7 +6,9 @@
 //   (b) the Tutte map (border on a circle), then minimize_distortion() with the border fixed, for
 //       the symmetric Dirichlet energy (SD) and for the conformal dilatation K;
 //   (c) as (b) for SD, but from the Tutte map scaled first by its optimal uniform scale, so that
-//       the fixed circle has about the right size for an isometric measure.
+//       the fixed circle has about the right size for an isometric measure;
+//   (d) free border: the Tutte map, then minimize_distortion() for SD with every vertex free and
+//       preserve_global_injectivity (the border may not cross itself), on 1 and 2 threads.
 //
 // Every map is scored by the same code: CGAL::compute_distortion() volume-weighted means of SD,
 // K and ARAP, and the number of inverted triangles. SD and ARAP depend on the scale of the map:
@@ -157,19 +159,28 @@ void run(const std::string& filename)
     DO::initial_parameterization(mesh, tutte);
     print_row(name, "Tutte", seconds_since(start), "-", score(mesh, tutte, scratch));
   }
-  auto improve = [&](const std::string& method, const auto& measure, double scale) {
+  auto improve = [&](const std::string& method, const auto& measure, double scale,
+                     const auto& np) {
     progress(method);
     for(vertex_descriptor v : mesh.vertices())
       uv[v] = K::Point_2(scale * tutte[v].x(), scale * tutte[v].y());
     const auto start = std::chrono::steady_clock::now();
-    const DO::Result r = CGAL::minimize_distortion(mesh, uv, measure);
+    const DO::Result r = CGAL::minimize_distortion(mesh, uv, measure, np);
     const double seconds = seconds_since(start);
     print_row(name, method, seconds, std::to_string(r.iterations) + (r.converged ? "" : "+"), score(mesh, uv, scratch));
   };
-  improve("Tutte+SD", DO::Symmetric_dirichlet(), 1.);
-  improve("Tutte+K", DO::Conformal_dilatation(), 1.);
+  const auto defaults = CGAL::parameters::default_values();
+  improve("Tutte+SD", DO::Symmetric_dirichlet(), 1., defaults);
+  improve("Tutte+SD 2thr", DO::Symmetric_dirichlet(), 1., DO::parameters::number_of_threads(2));
+  improve("Tutte+K", DO::Conformal_dilatation(), 1., defaults);
   // (c) The same SD run from the Tutte map scaled to its SD-optimal size.
-  improve("Tutte*s+SD", DO::Symmetric_dirichlet(), score(mesh, tutte, scratch).best_scale);
+  improve("Tutte*s+SD", DO::Symmetric_dirichlet(), score(mesh, tutte, scratch).best_scale, defaults);
+  // (d) Free border, kept from crossing itself.
+  auto none = mesh.add_property_map<vertex_descriptor, bool>("v:none", false).first;
+  for(int threads : {1, 2})
+    improve(threads == 1 ? "free+SD" : "free+SD 2thr", DO::Symmetric_dirichlet(), 1.,
+            DO::parameters::preserve_global_injectivity(true, DO::parameters::number_of_threads(threads))
+              .vertex_is_constrained_map(none));
 }
 
 } // namespace
