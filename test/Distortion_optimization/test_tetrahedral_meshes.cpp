@@ -91,6 +91,17 @@ struct Recording_map
 
 } // namespace
 
+// The cube [-1, 1]^3, given to TetGen as a closed triangle surface, with a tet volume bound.
+static void tetgen_cube(double max_volume, std::vector<std::array<double, 3>>& points,
+                        std::vector<std::array<std::size_t, 4>>& tets)
+{
+  std::vector<std::array<double, 3>> corners;
+  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
+  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  DO::tetrahedralize_with_tetgen(corners, faces, max_volume, points, tets);
+}
+
 TEST(TetrahedralMeshes, RadialMapOfAMesh3BallImprovesWithoutFlips)
 {
   const C3t3 c3t3 = mesh_sphere(0.3);
@@ -127,14 +138,9 @@ TEST(TetrahedralMeshes, RadialMapOfAMesh3BallImprovesWithoutFlips)
 
 TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
 {
-  // The cube [-1, 1]^3 as a closed triangle surface.
-  std::vector<std::array<double, 3>> corners;
-  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
-  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> tets;
-  DO::tetrahedralize_with_tetgen(corners, faces, 0.01, points, tets);
+  tetgen_cube(0.01, points, tets);
   ASSERT_GT(tets.size(), 800u);
   double volume = 0;
   for(const auto& t : tets) {
@@ -194,13 +200,9 @@ TEST(TetrahedralMeshes, StarShapedBallAndHarmonicStartsAreValidAndImprove)
 TEST(TetrahedralMeshes, ParallelRunsMatchOneThreadAndAreDeterministic)
 {
   // The paper's Table 1 setting at about 6K tets: TetGen cube, radial start, boundary fixed, K.
-  std::vector<std::array<double, 3>> corners;
-  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
-  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> tets;
-  DO::tetrahedralize_with_tetgen(corners, faces, 0.002, points, tets);
+  tetgen_cube(0.002, points, tets);
   C3t3 c3t3;
   DO::c3t3_from_tetrahedra(points, tets, c3t3);
   auto run = [&](int threads, DO::Parallel_sweep method, Target_storage& storage) {
