@@ -14,8 +14,10 @@
 #include <CGAL/Polyhedral_mesh_domain_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
+#include <CGAL/intersections.h>
 #include <CGAL/make_mesh_3.h>
 
+#include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <gtest/gtest.h>
 
@@ -224,6 +226,51 @@ TEST(TetrahedralMeshes, ParallelRunsMatchOneThreadAndAreDeterministic)
     const auto again = run(2, method, second);
     EXPECT_EQ(r.energy_per_iteration, again.energy_per_iteration);
     EXPECT_TRUE(first == second) << "two runs with 2 threads differ";
+  }
+}
+
+TEST(TetrahedralMeshes, FreeBoundaryRunKeepsTheBoundarySurfaceEmbedded)
+{
+  // The radial map of a TetGen cube with every vertex free: the boundary moves, the guard keeps
+  // it from crossing itself. Checked by brute force: boundary triangles sharing no vertex must not
+  // intersect (exact predicates).
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  tetgen_cube(0.01, points, tets);
+  C3t3 c3t3;
+  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  std::vector<std::array<Vertex_handle, 3>> boundary;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        boundary.push_back({c->vertex((i + 1) % 4), c->vertex((i + 2) % 4), c->vertex((i + 3) % 4)});
+  auto crossings = [&](const Target_storage& target) {
+    std::size_t count = 0;
+    for(std::size_t a = 0; a < boundary.size(); ++a)
+      for(std::size_t b = a + 1; b < boundary.size(); ++b) {
+        bool shared = false;
+        for(auto u : boundary[a])
+          for(auto w : boundary[b]) shared = shared || u == w;
+        if(shared) continue;
+        auto triangle = [&](const std::array<Vertex_handle, 3>& t) {
+          return K::Triangle_3(target.at(t[0]), target.at(t[1]), target.at(t[2]));
+        };
+        count += CGAL::do_intersect(triangle(boundary[a]), triangle(boundary[b]));
+      }
+    return count;
+  };
+  for(int threads : {1, 2}) {
+    Target_storage storage;
+    DO::map_vertices(c3t3, Target_map(storage), radial);
+    ASSERT_EQ(crossings(storage), 0u);
+    const auto none = boost::make_function_property_map<Vertex_handle>([](Vertex_handle) { return false; });
+    const auto r = CGAL::minimize_distortion(c3t3, Target_map(storage), DO::Conformal_dilatation(),
+      DO::parameters::preserve_global_injectivity(true, DO::parameters::number_of_threads(threads))
+        .vertex_is_constrained_map(none).number_of_iterations(30));
+    EXPECT_LT(r.final_energy - 1, 0.5 * (r.initial_energy - 1));
+    EXPECT_EQ(r.inverted_cells, 0u);
+    EXPECT_EQ(inverted(c3t3, storage), 0u);
+    EXPECT_EQ(crossings(storage), 0u) << threads << " threads";
   }
 }
 
