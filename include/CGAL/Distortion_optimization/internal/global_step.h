@@ -107,7 +107,8 @@ public:
   // Returns true if the map changed.
   bool harmonic_start()
   {
-    if(free_count_ == 0) return false;
+    // With nothing fixed the Dirichlet energy's minimizers are the constant maps: no start there.
+    if(free_count_ == 0 || free_count_ == static_cast<int>(p_.number_of_vertices())) return false;
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_count_, n), x(free_count_, n);
     refill(nullptr, &rhs);
     Eigen::IncompleteCholesky<double> preconditioner;
