@@ -104,6 +104,16 @@ static void tetgen_cube(double max_volume, std::vector<std::array<double, 3>>& p
   DO::tetrahedralize_with_tetgen(corners, faces, max_volume, points, tets);
 }
 
+static C3t3 tetgen_cube_complex(double max_volume)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  tetgen_cube(max_volume, points, tets);
+  C3t3 c3t3;
+  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  return c3t3;
+}
+
 TEST(TetrahedralMeshes, RadialMapOfAMesh3BallImprovesWithoutFlips)
 {
   const C3t3 c3t3 = mesh_sphere(0.3);
@@ -202,11 +212,7 @@ TEST(TetrahedralMeshes, StarShapedBallAndHarmonicStartsAreValidAndImprove)
 TEST(TetrahedralMeshes, ParallelRunsMatchOneThreadAndAreDeterministic)
 {
   // The paper's Table 1 setting at about 6K tets: TetGen cube, radial start, boundary fixed, K.
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> tets;
-  tetgen_cube(0.002, points, tets);
-  C3t3 c3t3;
-  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  const C3t3 c3t3 = tetgen_cube_complex(0.002);
   auto run = [&](int threads, DO::Parallel_sweep method, Target_storage& storage) {
     storage.clear();
     DO::map_vertices(c3t3, Target_map(storage), radial);
@@ -234,11 +240,7 @@ TEST(TetrahedralMeshes, FreeBoundaryRunKeepsTheBoundarySurfaceEmbedded)
   // The radial map of a TetGen cube with every vertex free: the boundary moves, the guard keeps
   // it from crossing itself. Checked by brute force: boundary triangles sharing no vertex must not
   // intersect (exact predicates).
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> tets;
-  tetgen_cube(0.01, points, tets);
-  C3t3 c3t3;
-  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  const C3t3 c3t3 = tetgen_cube_complex(0.01);
   std::vector<std::array<Vertex_handle, 3>> boundary;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
     for(int i = 0; i < 4; ++i)
