@@ -63,7 +63,7 @@ TEST(Parallel, SweepsReachTheSequentialEnergyWithoutFlips)
     ASSERT_TRUE(sequential.converged);
     ASSERT_EQ(count_flipped(disk.mesh, disk.uv), 0u);
     for(auto method : {DO::Parallel_sweep::INDEPENDENT_SETS, DO::Parallel_sweep::PARTITION})
-      for(int threads : {2, 3}) {
+      for(int threads : {0, 2, 3}) {   // 0: all the hardware offers
         const auto r = disk.run(np(threads, method));
         const std::string label = "threads " + std::to_string(threads) + " method " + std::to_string(int(method)) +
                                   " schedule " + std::to_string(int(schedule));

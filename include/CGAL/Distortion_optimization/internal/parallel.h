@@ -17,7 +17,6 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
@@ -34,7 +33,7 @@ public:
   explicit Workers(int requested = 1)
   {
 #ifdef CGAL_LINKED_WITH_TBB
-    threads_ = requested <= 0 ? tbb::info::default_concurrency() : requested;
+    threads_ = requested <= 0 ? tbb::this_task_arena::max_concurrency() : requested;   // TBB 2019 and oneTBB
     if(threads_ > 1) arena_ = std::make_unique<tbb::task_arena>(threads_);
 #else
     (void)requested;
