@@ -67,14 +67,17 @@ public:
   T reduce(std::size_t count, T identity, const Term& term, const Combine& combine) const
   {
     constexpr std::size_t chunk = 2048;
-    std::vector<T> partial((count + chunk - 1) / chunk, identity);
-    for_each(partial.size(), 1, [&](std::size_t k) {
+    const std::size_t chunks = (count + chunk - 1) / chunk;
+    // An array, not a std::vector: std::vector<bool> packs bits, and chunks written by different
+    // threads would share words.
+    const std::unique_ptr<T[]> partial(new T[chunks]);
+    for_each(chunks, 1, [&](std::size_t k) {
       T r = identity;
       for(std::size_t i = k * chunk; i < std::min(count, (k + 1) * chunk); ++i) r = combine(r, term(i));
       partial[k] = r;
     });
     T r = identity;
-    for(const T& p : partial) r = combine(r, p);
+    for(std::size_t k = 0; k < chunks; ++k) r = combine(r, partial[k]);
     return r;
   }
 
