@@ -110,10 +110,10 @@ flattened (checked with exact predicates); the energy never increases.
   - `Distortion_optimization::parameters::vertex_weight_map`: omega(v) > 0; default 1
   - `Distortion_optimization::parameters::cell_weighting`: a `Distortion_optimization::Cell_weighting`;
     default `AVERAGE_VOLUME`
-  - `CGAL::parameters::number_of_iterations`: the largest number of sweeps; default 100
-  - `Distortion_optimization::parameters::convergence_threshold`: stop when a sweep decreases
-    fraction of the energy above the measure's minimum (normalized measures) or of the energy;
-    default 1e-4
+  - `CGAL::parameters::number_of_iterations`: the largest number of iterations; default 100
+  - `Distortion_optimization::parameters::convergence_threshold`: stop when an iteration decreases
+    the energy by less than this fraction of the energy above the measure's minimum (normalized
+    measures) or of the energy; default 1e-4
   - `Distortion_optimization::parameters::local_solver`: `GRADIENT_DESCENT` (default) or `BFGS`
   - `Distortion_optimization::parameters::vertex_order`: `SORTED_PER_SWEEP` (default) or `GREEDY`
     (the paper's live priority queue)
@@ -131,7 +131,7 @@ flattened (checked with exact predicates); the energy never increases.
   - `Distortion_optimization::parameters::parallel_sweep`: `INDEPENDENT_SETS` (default) or
     `PARTITION` (the paper's Algorithm 3), for more than one thread
   - `CGAL::parameters::visitor`: a callable `bool(std::size_t iteration, double energy)` called
-    after each sweep; returning `false` stops the run with the map of that sweep
+    after each iteration; returning `false` stops the run with the map of that iteration
 
 \returns a `Distortion_optimization::Result`
 

@@ -100,8 +100,6 @@ public:
     previous_solution_ = Eigen::MatrixXd::Zero(free_count_, n);
   }
 
-  bool has_free_vertices() const { return free_count_ > 0; }
-
   // The harmonic start (see the file comment), solved on the global step's sparsity pattern with
   // the cell weights w(c) (for the default weights, the volume-weighted cotangent Laplacian).
   // Returns true if the map changed.
@@ -142,7 +140,9 @@ public:
     previous_solution_ = x;
     double slope = 0;
     for(int d = 0; d < n; ++d) slope += g.col(d).dot(x.col(d));
-    if(!(slope < 0)) return false;   // P is positive definite, so only a failed solve gets here
+    // P is positive definite (semi-definite with nothing fixed, g then in its range), so only a
+    // failed solve gets here.
+    if(!(slope < 0)) return false;
     std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
     for(std::size_t v = 0; v < direction.size(); ++v)
       if(free_index_[v] >= 0) direction[v] = x.row(free_index_[v]).transpose();

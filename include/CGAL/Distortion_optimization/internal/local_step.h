@@ -159,21 +159,16 @@ public:
       cell_value[c] = trial[i];
       if(!cell_ok[c]) cell_ok[c] = !is_inverted(p_.map, c);
     };
-    const auto either = [](bool a, bool b) { return a || b; };
-    if(workers) {
-      const double e = e0 + workers->sum(count, value);
-      if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
-      if(workers->reduce(count, false, flipped, either) || !check()) return false;
-      workers->for_each(count, 1024, commit);
-      return true;
-    }
     double e = e0;
-    for(std::size_t i = 0; i < count; ++i) e += value(i);
+    if(workers) e += workers->sum(count, value);
+    else for(std::size_t i = 0; i < count; ++i) e += value(i);
     if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
-    for(std::size_t i = 0; i < count; ++i)
-      if(flipped(i)) return false;
-    if(!check()) return false;
-    for(std::size_t i = 0; i < count; ++i) commit(i);
+    bool any_flipped = false;
+    if(workers) any_flipped = workers->reduce(count, false, flipped, [](bool a, bool b) { return a || b; });
+    else for(std::size_t i = 0; i < count && !any_flipped; ++i) any_flipped = flipped(i);
+    if(any_flipped || !check()) return false;
+    if(workers) workers->for_each(count, 1024, commit);
+    else for(std::size_t i = 0; i < count; ++i) commit(i);
     return true;
   }
 

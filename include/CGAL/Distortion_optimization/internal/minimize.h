@@ -60,22 +60,23 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
                           "measure '" + measure.name() + "' is infinite there: untangle the map first");
   }
 
-  // The guard, only where it has work: some free vertex on the boundary.
+  // The guard, only where it has work: some free vertex on the boundary. Those vertices share the
+  // guard, so a parallel sweep optimizes them one at a time: with Algorithm 3's interface, or after
+  // the independent sets.
   std::unique_ptr<Boundary_guard<n>> guard;
-  if(options.global_injectivity) {
+  if(options.global_injectivity)
     guard = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
                                                 problem.number_of_vertices());
-    bool free_boundary = false;
-    for(std::size_t v = 0; v < problem.number_of_vertices(); ++v)
-      free_boundary = free_boundary || (problem.is_free[v] && guard->is_on_boundary(v));
-    if(free_boundary) {
-      if(!guard->is_injective(problem.map.target))
-        throw Invalid_input("the boundary of the start map intersects itself: global injectivity cannot be preserved");
-      guard->rebuild(problem.map.target);
-      step.set_boundary_guard(guard.get());
-    } else {
-      guard.reset();
-    }
+  std::vector<std::uint32_t> parallel_vertices, guarded_vertices;
+  for(std::uint32_t v : free_vertices(problem))
+    (guard && guard->is_on_boundary(v) ? guarded_vertices : parallel_vertices).push_back(v);
+  if(guarded_vertices.empty()) {
+    guard.reset();
+  } else {
+    if(!guard->is_injective(problem.map.target))
+      throw Invalid_input("the boundary of the start map intersects itself: global injectivity cannot be preserved");
+    guard->rebuild(problem.map.target);
+    step.set_boundary_guard(guard.get());
   }
 
   Result result;
@@ -94,11 +95,6 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   }
   // One thread: the sequential sweep (Algorithm 2). More: independent sets or Algorithm 3, set up
   // at the first sweep (after the harmonic start, which moves the map the partition is cut from).
-  // Guarded boundary vertices share the guard, so they are swept one at a time: with Algorithm 3's
-  // interface, or after the independent sets.
-  std::vector<std::uint32_t> parallel_vertices, guarded_vertices;
-  for(std::uint32_t v : free_vertices(problem))
-    (guard && guard->is_on_boundary(v) ? guarded_vertices : parallel_vertices).push_back(v);
   std::vector<std::vector<std::uint32_t>> sets;
   Vertex_partition partition;
   const auto sweep = [&] {
