@@ -149,6 +149,34 @@ std::vector<Index> boundary_vertices(std::size_t number_of_vertices, const Guard
   return result;
 }
 
+
+// Random moves of the boundary vertices of m (move(v) changes m.target[v]): the guard's answers,
+// accepts_move and is_injective, must both be `expected(v)`; an injective move is committed, any
+// other undone. Counts the accepted and rejected moves.
+template <int n, class Move, class Expected>
+void check_random_moves(Map<n>& m, DOI::Boundary_guard<n>& guard, const std::vector<Index>& boundary,
+                        std::mt19937& rng, int moves, const Move& move, const Expected& expected,
+                        int& accepted, int& rejected)
+{
+  std::uniform_int_distribution<std::size_t> pick(0, boundary.size() - 1);
+  accepted = rejected = 0;
+  for(int k = 0; k < moves; ++k) {
+    const Index v = boundary[pick(rng)];
+    const Vector<n> before = m.target[v];
+    move(v);
+    const bool injective = expected(v);
+    ASSERT_EQ(guard.accepts_move(v, m.target), injective) << "move " << k;
+    ASSERT_EQ(guard.is_injective(m.target), injective) << "move " << k;
+    if(injective) {
+      guard.commit_move(v, m.target);
+      ++accepted;
+    } else {
+      m.target[v] = before;
+      ++rejected;
+    }
+  }
+}
+
 } // namespace
 
 TEST(BoundaryGuard, BoundaryFacesOfTwoTrianglesAndTwoTets)
@@ -314,10 +342,8 @@ TEST(BoundaryGuard, AgreesWithBruteForceOnRandomPlanarMoves)
   std::uniform_int_distribution<std::size_t> pick(0, boundary.size() - 1);
   std::uniform_real_distribution<double> small(-0.4, 0.4), large(-8, 8);
   std::uniform_int_distribution<int> kind(0, 3), lattice(-4, 18);
-  int accepted = 0, rejected = 0;
-  for(int move = 0; move < 600; ++move) {
-    const Index v = boundary[pick(rng)];
-    const Vector<2> before = m.target[v];
+  int accepted, rejected;
+  check_random_moves(m, guard, boundary, rng, 600, [&](Index v) {
     switch(kind(rng)) {
       case 0: m.target[v] += Vector<2>(small(rng), small(rng)); break;
       case 1: m.target[v] += Vector<2>(large(rng), large(rng)); break;
@@ -327,17 +353,8 @@ TEST(BoundaryGuard, AgreesWithBruteForceOnRandomPlanarMoves)
         m.target[v] = rng() % 2 ? m.target[f[0]] : Vector<2>((m.target[f[0]] + m.target[f[1]]) / 2);
       }
     }
-    const bool expected = brute_force_injective(faces, m.target);
-    ASSERT_EQ(guard.accepts_move(v, m.target), expected) << "move " << move;
-    ASSERT_EQ(guard.is_injective(m.target), expected) << "move " << move;
-    if(expected) {
-      guard.commit_move(v, m.target);
-      ++accepted;
-    } else {
-      m.target[v] = before;
-      ++rejected;
-    }
-  }
+  }, [&](Index) { return brute_force_injective(faces, m.target); }, accepted, rejected);
+  ASSERT_FALSE(HasFatalFailure());
   EXPECT_GT(accepted, 100);
   EXPECT_GT(rejected, 100);
 }
@@ -454,29 +471,18 @@ TEST(BoundaryGuard, AgreesWithBruteForceOnRandomTetBoundaryMoves)
   guard.rebuild(m.target);
   const std::vector<Index> boundary = boundary_vertices(m.target.size(), guard);
   std::mt19937 rng(11);
-  std::uniform_int_distribution<std::size_t> pick(0, boundary.size() - 1);
   std::uniform_real_distribution<double> small(-0.3, 0.3), large(-3, 3);
   std::uniform_int_distribution<int> kind(0, 2), lattice(-2, 6);
-  int accepted = 0, rejected = 0;
-  for(int move = 0; move < 300; ++move) {
-    const Index v = boundary[pick(rng)];
-    const Vector<3> before = m.target[v];
+  int accepted, rejected;
+  check_random_moves(m, guard, boundary, rng, 300, [&](Index v) {
     switch(kind(rng)) {
       case 0: m.target[v] += Vector<3>(small(rng), small(rng), small(rng)); break;
       case 1: m.target[v] += Vector<3>(large(rng), large(rng), large(rng)); break;
       default: m.target[v] = Vector<3>(lattice(rng), lattice(rng), lattice(rng)) / 2;   // exact degeneracies
     }
-    const bool expected = brute_force_injective(faces, m.target, &v);   // the state before was injective
-    ASSERT_EQ(guard.accepts_move(v, m.target), expected) << "move " << move;
-    ASSERT_EQ(guard.is_injective(m.target), expected) << "move " << move;
-    if(expected) {
-      guard.commit_move(v, m.target);
-      ++accepted;
-    } else {
-      m.target[v] = before;
-      ++rejected;
-    }
-  }
+  }, [&](Index v) { return brute_force_injective(faces, m.target, &v); },   // the state before was injective
+     accepted, rejected);
+  ASSERT_FALSE(HasFatalFailure());
   EXPECT_TRUE(brute_force_injective(faces, m.target));
   EXPECT_GT(accepted, 50);
   EXPECT_GT(rejected, 50);

@@ -23,21 +23,28 @@ using Point_3 = K::Point_3;
 using Mesh3 = CGAL::Surface_mesh<Point_3>;
 using Mesh2 = CGAL::Surface_mesh<Point_2>;
 
-// A (k x k)-square grid on [0,1]^2 split into 2 k^2 triangles, counter-clockwise.
+// A (columns x rows)-square grid on [0,1]^2 split into 2 columns rows triangles, counter-clockwise
+// in the (x, y) plane, each vertex placed at make_point(x, y).
 template <class Mesh, class MakePoint>
-Mesh grid(int k, MakePoint make_point)
+Mesh grid(int columns, int rows, MakePoint make_point)
 {
   Mesh m;
   std::vector<typename Mesh::Vertex_index> v;
-  for(int j = 0; j <= k; ++j)
-    for(int i = 0; i <= k; ++i) v.push_back(m.add_vertex(make_point(double(i) / k, double(j) / k)));
-  auto at = [&](int i, int j) { return v[j * (k + 1) + i]; };
-  for(int j = 0; j < k; ++j)
-    for(int i = 0; i < k; ++i) {
+  for(int j = 0; j <= rows; ++j)
+    for(int i = 0; i <= columns; ++i) v.push_back(m.add_vertex(make_point(double(i) / columns, double(j) / rows)));
+  auto at = [&](int i, int j) { return v[j * (columns + 1) + i]; };
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < columns; ++i) {
       m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
       m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
     }
   return m;
+}
+
+template <class Mesh, class MakePoint>
+Mesh grid(int k, MakePoint make_point)
+{
+  return grid<Mesh>(k, k, make_point);
 }
 
 inline Mesh2 planar_grid(int k) { return grid<Mesh2>(k, [](double x, double y) { return Point_2(x, y); }); }

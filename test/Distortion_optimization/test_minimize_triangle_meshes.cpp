@@ -312,21 +312,10 @@ std::size_t border_self_intersections(const Mesh3& mesh, const Mesh3::Property_m
 // annular sector of more than 360 degrees, so an unguarded free-boundary run overlaps its ends.
 static Mesh3 helical_ramp(double turns)
 {
-  const int nr = 6, nt = 120;
-  Mesh3 mesh;
-  std::vector<Mesh3::Vertex_index> v;
-  for(int j = 0; j <= nt; ++j)
-    for(int i = 0; i <= nr; ++i) {
-      const double r = 1 + double(i) / nr, t = 2 * CGAL_PI * turns * j / nt;
-      v.push_back(mesh.add_vertex(Point_3(r * std::cos(t), r * std::sin(t), 0.3 * t)));
-    }
-  auto at = [&](int i, int j) { return v[j * (nr + 1) + i]; };
-  for(int j = 0; j < nt; ++j)
-    for(int i = 0; i < nr; ++i) {
-      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  return mesh;
+  return grid<Mesh3>(6, 120, [turns](double u, double w) {
+    const double r = 1 + u, t = 2 * CGAL_PI * turns * w;
+    return Point_3(r * std::cos(t), r * std::sin(t), 0.3 * t);
+  });
 }
 
 TEST(MinimizeDistortion, FreeBoundaryParametrizationStaysGloballyInjective)
