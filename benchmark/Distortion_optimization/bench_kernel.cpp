@@ -116,19 +116,40 @@ void cell_energy_and_gradient(benchmark::State& state)
   state.SetLabel(n == 2 ? "triangles" : "tets");
 }
 
-template <int n, bool closed_form>
-void svd(benchmark::State& state)
+// 4096 Jacobians: the identity plus a random perturbation of the given size.
+template <int n>
+std::vector<DI::Matrix<n>> random_jacobians(double size)
 {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<DI::Matrix<n>> Js(4096);
-  for(auto& J : Js) J = DI::Matrix<n>::Identity() + 0.3 * DI::Matrix<n>::NullaryExpr([&] { return u(rng); });
+  for(auto& J : Js) J = DI::Matrix<n>::Identity() + size * DI::Matrix<n>::NullaryExpr([&] { return u(rng); });
+  return Js;
+}
+
+template <int n, bool closed_form>
+void svd(benchmark::State& state)
+{
+  const std::vector<DI::Matrix<n>> Js = random_jacobians<n>(0.3);
   DI::Signed_svd<n> out;
   for(auto _ : state)
     for(const auto& J : Js) {
       if constexpr(closed_form) DI::signed_svd(J, out);
       else DI::signed_svd_jacobi(J, out);
       benchmark::DoNotOptimize(out.sigma.data());
+    }
+  state.SetItemsProcessed(state.iterations() * Js.size());
+}
+
+// Singular values only (what a trial step of a line search needs).
+template <int n>
+void singular_values(benchmark::State& state)
+{
+  const std::vector<DI::Matrix<n>> Js = random_jacobians<n>(0.3);
+  for(auto _ : state)
+    for(const auto& J : Js) {
+      DI::Vector<n> s = DI::signed_singular_values(J);
+      benchmark::DoNotOptimize(s.data());
     }
   state.SetItemsProcessed(state.iterations() * Js.size());
 }
@@ -155,5 +176,7 @@ BENCHMARK_TEMPLATE(svd, 2, true);
 BENCHMARK_TEMPLATE(svd, 2, false);
 BENCHMARK_TEMPLATE(svd, 3, true);
 BENCHMARK_TEMPLATE(svd, 3, false);
+BENCHMARK_TEMPLATE(singular_values, 2);
+BENCHMARK_TEMPLATE(singular_values, 3);
 
 BENCHMARK_MAIN();

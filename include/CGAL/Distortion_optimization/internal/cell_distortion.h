@@ -12,7 +12,7 @@
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
 #include <array>
-
+#include <cmath>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -54,28 +54,37 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
       value = measure.template value_without_svd<n>(J, &dJ);
       if(sigma) *sigma = signed_singular_values(J);
     } else if constexpr(n == 2) {
-      // J = S + A with S = [E -H; H E] a similarity and A = [F G; G -F] an anti-similarity:
-      // sigma = (Q + R, Q - R) with Q = |(E, H)|, R = |(F, G)|, dQ/dJ = S / 2Q, dR/dJ = A / 2R,
-      // so dD/dJ = (g1 + g2) S / 2Q + (g1 - g2) A / 2R needs no angle.
-      const double E = 0.5 * (J(0, 0) + J(1, 1)), F = 0.5 * (J(0, 0) - J(1, 1));
-      const double G = 0.5 * (J(1, 0) + J(0, 1)), H = 0.5 * (J(1, 0) - J(0, 1));
-      const double Q = std::hypot(E, H), R = std::hypot(F, G), s1 = Q + R;
-      const Vector<2> s(s1, s1 > 0 ? (J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0)) / s1 : 0.);
+      // With J = S + A, S = [E -H; H E] and A = [F G; G -F] (svd.h): dQ/dJ = S / 2Q and
+      // dR/dJ = A / 2R, so dD/dJ = (g1 + g2) S / 2Q + (g1 - g2) A / 2R needs no angle.
+      const Conformal_parts p(J);
+      const Vector<2> s = p.signed_singular_values(J);
       value = measure.template value<2>(s);
       if(sigma) *sigma = s;
       if(value < std::numeric_limits<double>::infinity()) {
         const Vector<2> g = measure.template gradient<2>(s);
-        const double a = Q > 0 ? (g[0] + g[1]) / (2 * Q) : 0., b = R > 0 ? (g[0] - g[1]) / (2 * R) : 0.;
-        dJ << a * E + b * F, -a * H + b * G,
-              a * H + b * G,  a * E - b * F;
+        const double a = p.Q > 0 ? (g[0] + g[1]) / (2 * p.Q) : 0., b = p.R > 0 ? (g[0] - g[1]) / (2 * p.R) : 0.;
+        dJ << a * p.E + b * p.F, -a * p.H + b * p.G,
+              a * p.H + b * p.G,  a * p.E - b * p.F;
       }
     } else {
-      Signed_svd<n> svd;
-      signed_svd(J, svd);
-      value = measure.template value<n>(svd.sigma);
-      if(sigma) *sigma = svd.sigma;
-      if(value < std::numeric_limits<double>::infinity())
-        dJ.noalias() = svd.U * measure.template gradient<n>(svd.sigma).asDiagonal() * svd.V.transpose();
+      // 3D: the singular vectors only through Sylvester's formula where the values are apart.
+      Matrix<3> A;
+      Vector<3> l;
+      if(separated_gram_eigenvalues(J, A, l)) {
+        const double s1 = std::sqrt(l[0]), s2 = std::sqrt(l[1]);
+        const Vector<3> s(s1, s2, J.determinant() / (s1 * s2));
+        value = measure.template value<3>(s);
+        if(sigma) *sigma = s;
+        if(value < std::numeric_limits<double>::infinity())
+          dJ = gram_spectral_product(J, A, l, s, measure.template gradient<3>(s));
+      } else {
+        Signed_svd<3> svd;
+        signed_svd(J, svd);
+        value = measure.template value<3>(svd.sigma);
+        if(sigma) *sigma = svd.sigma;
+        if(value < std::numeric_limits<double>::infinity())
+          dJ.noalias() = svd.U * measure.template gradient<3>(svd.sigma).asDiagonal() * svd.V.transpose();
+      }
     }
   }
   if(!(value < std::numeric_limits<double>::infinity()))

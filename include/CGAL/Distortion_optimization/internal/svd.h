@@ -39,18 +39,32 @@ Vector<n> not_a_number_vector()
 }
 
 // ---------------------------------------------------------------- 2x2, closed form
-// With E=(a+d)/2, F=(a-d)/2, G=(c+b)/2, H=(c-b)/2, J is the sum of a similarity (E,H) and an
-// anti-similarity (F,G); their magnitudes Q, R give sigma = (Q+R, Q-R) and their angles the two
-// rotations.  sigma_2 is taken as det/sigma_1 to avoid the cancellation in Q-R.
+// J = [E -H; H E] + [F G; G -F], the sum of a similarity and an anti-similarity with
+// E=(a+d)/2, F=(a-d)/2, G=(c+b)/2, H=(c-b)/2; their magnitudes Q, R give sigma = (Q+R, Q-R) and
+// their angles the two rotations. sigma_2 is taken as det/sigma_1 to avoid the cancellation in Q-R.
 
-inline Vector<2> signed_singular_values(const Matrix<2>& J)
+// |(a, b)|: std::hypot is several times slower than a square root; it is kept only where the
+// sum of squares would overflow or underflow.
+inline double magnitude(double a, double b)
 {
-  const double E = 0.5 * (J(0, 0) + J(1, 1)), F = 0.5 * (J(0, 0) - J(1, 1));
-  const double G = 0.5 * (J(1, 0) + J(0, 1)), H = 0.5 * (J(1, 0) - J(0, 1));
-  const double s1 = std::hypot(E, H) + std::hypot(F, G);
-  const double det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
-  return Vector<2>(s1, s1 > 0 ? det / s1 : 0.);
+  const double m2 = a * a + b * b;
+  return m2 < 1e300 && m2 > 1e-300 ? std::sqrt(m2) : std::hypot(a, b);
 }
+
+struct Conformal_parts
+{
+  double E, F, G, H, Q, R;
+  explicit Conformal_parts(const Matrix<2>& J)
+    : E(0.5 * (J(0, 0) + J(1, 1))), F(0.5 * (J(0, 0) - J(1, 1))),
+      G(0.5 * (J(1, 0) + J(0, 1))), H(0.5 * (J(1, 0) - J(0, 1))), Q(magnitude(E, H)), R(magnitude(F, G)) {}
+  Vector<2> signed_singular_values(const Matrix<2>& J) const
+  {
+    const double s1 = Q + R;
+    return Vector<2>(s1, s1 > 0 ? (J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0)) / s1 : 0.);
+  }
+};
+
+inline Vector<2> signed_singular_values(const Matrix<2>& J) { return Conformal_parts(J).signed_singular_values(J); }
 
 inline bool signed_svd(const Matrix<2>& J, Signed_svd<2>& out)
 {
@@ -58,16 +72,13 @@ inline bool signed_svd(const Matrix<2>& J, Signed_svd<2>& out)
     out.sigma = not_a_number_vector<2>();
     return false;
   }
-  const double E = 0.5 * (J(0, 0) + J(1, 1)), F = 0.5 * (J(0, 0) - J(1, 1));
-  const double G = 0.5 * (J(1, 0) + J(0, 1)), H = 0.5 * (J(1, 0) - J(0, 1));
-  const double s1 = std::hypot(E, H) + std::hypot(F, G);
-  const double det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
-  const double a1 = std::atan2(G, F), a2 = std::atan2(H, E);
+  const Conformal_parts c(J);
+  const double a1 = std::atan2(c.G, c.F), a2 = std::atan2(c.H, c.E);
   const double phi = 0.5 * (a2 + a1), theta = 0.5 * (a2 - a1);
   const double cp = std::cos(phi), sp = std::sin(phi), ct = std::cos(theta), st = std::sin(theta);
   out.U << cp, -sp, sp, cp;
   out.V << ct, st, -st, ct;   // V^T is the rotation by theta
-  out.sigma = Vector<2>(s1, s1 > 0 ? det / s1 : 0.);
+  out.sigma = c.signed_singular_values(J);
   return true;
 }
 
@@ -150,21 +161,84 @@ inline bool signed_svd(const Matrix<3>& J, Signed_svd<3>& out)
   return true;
 }
 
-// Values only: the closed-form eigenvalues of J^T J (a third of the full decomposition's cost) are
-// accurate to a few ulps of sigma_1 when the eigenvalues are well apart and none is tiny; otherwise
-// (nearly conformal or nearly flat cells) the full decomposition above is used.
+// The largest root t of t^3 - 3t - 2r, r in [-1, 1], is 1 + e with e^2 (3 + e) = w^2, w = sqrt(2 + 2r):
+// e is analytic in w on [0, 2]; this degree-7 least-squares fit in (w - 1) is within 1.2e-7 of it.
+inline double largest_root_seed(double w)
+{
+  // Estrin's scheme: a short dependency chain (this sits on the critical path of every value).
+  const double x = w - 1, x2 = x * x, x4 = x2 * x2;
+  const double c01 = 0.53208891261343982 + 0.49481809700031087 * x;
+  const double c23 = -0.031019315777351064 + 0.0049332218603241364 * x;
+  const double c45 = -0.0010031790380941544 + 0.00023087870698921864 * x;
+  const double c67 = -6.6317914159677585e-05 + 1.7787376525066081e-05 * x;
+  return 1 + (c01 + c23 * x2) + (c45 + c67 * x2) * x4;
+}
+
+// One step of Halley's method on t^3 - 3t - 2r (cubic convergence).
+inline double halley_step(double t, double r)
+{
+  const double f = t * (t * t - 3) - 2 * r, df = 3 * (t * t - 1), ddf = 6 * t;
+  return t - 2 * f * df / (2 * df * df - f * ddf);
+}
+
+// The eigenvalues l_1 > l_2 > l_3 of the Gram matrix A = J^T J, when they are well apart
+// (relative gaps above 1e-2, l_3 > 1e-4 l_1): the only case where the fast paths below use them.
+// They are the roots of A's characteristic cubic: with q = tr A / 3 and p^2 = |A - q I|^2 / 6,
+// those of B = (A - q I) / p are the roots t of t^3 - 3t - 2r, r = det B / 2 (Smith, "Eigenvalues
+// of a symmetric 3 x 3 matrix", CACM 1961, solves it with acos and cos). Here the largest and
+// the smallest root (-t(-r)) come from a polynomial seed and one Halley step, exact to a few
+// ulps where the roots are apart: no trigonometric call, a third of the time of the trigonometric
+// solution. Returns false otherwise (nearly conformal or flat cells, extreme scales, NaN).
+inline bool separated_gram_eigenvalues(const Matrix<3>& J, Matrix<3>& A, Vector<3>& l)
+{
+  A.noalias() = J.transpose() * J;
+  const double trace = A.trace();
+  if(!(trace > 1e-100 && trace < 1e100)) return false;
+  const double q = trace * (1. / 3), b0 = A(0, 0) - q, b1 = A(1, 1) - q, b2 = A(2, 2) - q;
+  const double a01 = A(0, 1), a02 = A(0, 2), a12 = A(1, 2);
+  const double p2 = (b0 * b0 + b1 * b1 + b2 * b2 + 2 * (a01 * a01 + a02 * a02 + a12 * a12)) * (1. / 6);
+  if(!(p2 > 1e-12 * q * q)) return false;
+  const double p = std::sqrt(p2);
+  const double det_b = b0 * (b1 * b2 - a12 * a12) - a01 * (a01 * b2 - a12 * a02) + a02 * (a01 * a12 - b1 * a02);
+  const double r = std::clamp(det_b / (2 * p2 * p), -1., 1.);
+  const double t1 = halley_step(largest_root_seed(std::sqrt(2 + 2 * r)), r);
+  const double t3 = -halley_step(largest_root_seed(std::sqrt(2 - 2 * r)), -r);
+  l = Vector<3>(q + p * t1, q - p * (t1 + t3), q + p * t3);
+  return l[0] - l[1] > 1e-2 * l[0] && l[1] - l[2] > 1e-2 * l[0] && l[2] > 1e-4 * l[0];
+}
+
+// Values only: from the separated eigenvalues (about a fifth of the full decomposition's cost),
+// sigma_3 from the determinant so that it carries its sign; otherwise the full decomposition.
 inline Vector<3> signed_singular_values(const Matrix<3>& J)
 {
-  Eigen::SelfAdjointEigenSolver<Matrix<3>> es;
-  es.computeDirect(J.transpose() * J, Eigen::EigenvaluesOnly);
-  const Vector<3>& l = es.eigenvalues();   // ascending
-  if(l[0] > 1e-4 * l[2] && l[1] - l[0] > 1e-2 * l[2] && l[2] - l[1] > 1e-2 * l[2]) {
-    const double s1 = std::sqrt(l[2]), s2 = std::sqrt(l[1]);
+  Matrix<3> A;
+  Vector<3> l;
+  if(separated_gram_eigenvalues(J, A, l)) {
+    const double s1 = std::sqrt(l[0]), s2 = std::sqrt(l[1]);
     return Vector<3>(s1, s2, J.determinant() / (s1 * s2));
   }
   Signed_svd<3> svd;
   signed_svd(J, svd);
   return svd.sigma;
+}
+
+// U diag(g) V^T from the separated eigenvalues l of A = J^T J, without the singular vectors:
+// u_i v_i^T = J v_i v_i^T / sigma_i, so U diag(g) V^T = J f(A) for the function f with
+// f(l_i) = g_i / sigma_i, which on A's spectrum is the quadratic interpolating these three
+// values (Sylvester's formula, here in Newton's divided-difference form). Its rounding error is
+// that of the divided differences, below 1e-11 relative under the separation above.
+inline Matrix<3> gram_spectral_product(const Matrix<3>& J, const Matrix<3>& A, const Vector<3>& l,
+                                       const Vector<3>& sigma, const Vector<3>& g)
+{
+  const Vector<3> h = g.cwiseQuotient(sigma);
+  const double d01 = (h[1] - h[0]) / (l[1] - l[0]), d12 = (h[2] - h[1]) / (l[2] - l[1]);
+  const double d012 = (d12 - d01) / (l[2] - l[0]);
+  Matrix<3> M0 = A, M1 = A;
+  M0.diagonal().array() -= l[0];
+  M1.diagonal().array() -= l[1];
+  Matrix<3> F = d012 * (M0 * M1) + d01 * M0;
+  F.diagonal().array() += h[0];
+  return J * F;
 }
 
 // ---------------------------------------------------------------- reference: Eigen's JacobiSVD
