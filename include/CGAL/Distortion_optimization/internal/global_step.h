@@ -202,19 +202,22 @@ private:
     constexpr std::size_t block = 8192;
     std::vector<Eigen::Matrix<double, n + 1, n + 1>> stiffness(std::min(block, moving_cells_.size()));
     std::vector<std::array<Vec, n + 1>> gradient(g ? stiffness.size() : 0);
+    constexpr bool reweighted = measures_internal::Has_laplacian_weight<Measure, n>::value;
+    std::vector<Vec> sigma(g && reweighted ? stiffness.size() : 0);
+    std::vector<double> value(g ? stiffness.size() : 0);
     for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
       const std::size_t count = std::min(block, moving_cells_.size() - first);
-      workers_.for_each(count, 256, [&](std::size_t i) {
-        const std::uint32_t c = moving_cells_[first + i];
-        double factor = 1;
-        if(g) {
-          constexpr bool reweighted = measures_internal::Has_laplacian_weight<Measure, n>::value;
-          Vec sigma = Vec::Ones();
-          cell_distortion<n>(measure_, p_.map, c, gradient[i], reweighted ? &sigma : nullptr);
-          if constexpr(reweighted) factor = measures_internal::laplacian_weight<n>(measure_, sigma);
+      workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
+        if(g)
+          cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return moving_cells_[first + begin + i]; },
+                              &value[begin], &gradient[begin], reweighted ? &sigma[begin] : nullptr);
+        for(std::size_t i = begin; i < begin + size; ++i) {
+          const std::uint32_t c = moving_cells_[first + i];
+          double factor = 1;
+          if constexpr(reweighted) if(g) factor = measures_internal::laplacian_weight<n>(measure_, sigma[i]);
+          const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
+          stiffness[i] = (p_.cell_weight[c] * factor) * (G.transpose() * G);
         }
-        const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
-        stiffness[i] = (p_.cell_weight[c] * factor) * (G.transpose() * G);
       });
       for(std::size_t i = 0; i < count; ++i) {
         const std::uint32_t c = moving_cells_[first + i];

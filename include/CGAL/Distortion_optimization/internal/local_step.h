@@ -148,9 +148,14 @@ public:
     static thread_local std::vector<double> ring_trial;
     std::vector<double>& trial = workers ? global_trial_ : ring_trial;
     trial.resize(count);
+    if(workers)
+      workers->for_each_block(count, 512, [&](std::size_t first, std::size_t size) {
+        cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return cell_at(first + i); }, &trial[first]);
+      });
+    else
+      cell_distortions<n>(measure_, p_.map, count, cell_at, trial.data());
     const auto value = [&](std::size_t i) {
       const std::uint32_t c = cell_at(i);
-      trial[i] = cell_distortion<n>(measure_, p_.map.jacobian(c));
       return p_.cell_weight[c] * (trial[i] - cell_value[c]);
     };
     const auto flipped = [&](std::size_t i) { return cell_ok[cell_at(i)] && is_inverted(p_.map, cell_at(i)); };
@@ -176,14 +181,19 @@ private:
   // The ring's energy sum_c w(c) D(J_c) at the current position of v and its gradient in v.
   double ring_gradient(std::size_t v, Vec& g) const
   {
+    static thread_local std::vector<double> value;
+    static thread_local std::vector<std::array<Vec, n + 1>> gradient;
+    const std::uint32_t begin = p_.ring_begin[v], count = p_.ring_begin[v + 1] - begin;
+    value.resize(count);
+    gradient.resize(count);
+    cell_distortions<n>(measure_, p_.map, count, [&](std::size_t i) { return p_.ring[begin + i].cell; }, value.data(), gradient.data());
     g.setZero();
     double e = 0;
-    std::array<Vec, n + 1> cell_gradient;
-    for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k) {
-      const Incidence& in = p_.ring[k];
+    for(std::uint32_t i = 0; i < count; ++i) {
+      const Incidence& in = p_.ring[begin + i];
       const double w = p_.cell_weight[in.cell];
-      e += w * cell_distortion<n>(measure_, p_.map, in.cell, cell_gradient);
-      g += w * cell_gradient[in.local];
+      e += w * value[i];
+      g += w * gradient[i][in.local];
     }
     return e;
   }

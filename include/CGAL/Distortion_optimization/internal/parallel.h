@@ -61,6 +61,14 @@ public:
     for(std::size_t i = 0; i < count; ++i) body(i);
   }
 
+  // Runs body(first, size) on the blocks [first, first + size) of at most `block` indices that
+  // cover [0, count), in parallel: for kernels that work on several indices at once.
+  template <class Body>
+  void for_each_block(std::size_t count, std::size_t block, const Body& body) const
+  {
+    for_each((count + block - 1) / block, 1, [&](std::size_t k) { body(k * block, std::min(block, count - k * block)); });
+  }
+
   // combine(..., term(i), ...) over i in [0, count), the same whatever the number of threads: fixed
   // chunks reduced in parallel, then combined in order.
   template <class T, class Term, class Combine>

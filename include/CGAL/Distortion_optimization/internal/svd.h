@@ -15,6 +15,7 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -161,50 +162,56 @@ inline bool signed_svd(const Matrix<3>& J, Signed_svd<3>& out)
   return true;
 }
 
-// The largest root t of t^3 - 3t - 2r, r in [-1, 1], is 1 + e with e^2 (3 + e) = w^2, w = sqrt(2 + 2r):
-// e is analytic in w on [0, 2]; this degree-7 least-squares fit in (w - 1) is within 1.2e-7 of it.
-inline double largest_root_seed(double w)
-{
-  // Estrin's scheme: a short dependency chain (this sits on the critical path of every value).
-  const double x = w - 1, x2 = x * x, x4 = x2 * x2;
-  const double c01 = 0.53208891261343982 + 0.49481809700031087 * x;
-  const double c23 = -0.031019315777351064 + 0.0049332218603241364 * x;
-  const double c45 = -0.0010031790380941544 + 0.00023087870698921864 * x;
-  const double c67 = -6.6317914159677585e-05 + 1.7787376525066081e-05 * x;
-  return 1 + (c01 + c23 * x2) + (c45 + c67 * x2) * x4;
-}
-
-// One step of Halley's method on t^3 - 3t - 2r (cubic convergence).
-inline double halley_step(double t, double r)
-{
-  const double f = t * (t * t - 3) - 2 * r, df = 3 * (t * t - 1), ddf = 6 * t;
-  return t - 2 * f * df / (2 * df * df - f * ddf);
-}
-
-// The eigenvalues l_1 > l_2 > l_3 of the Gram matrix A = J^T J, when they are well apart
-// (relative gaps above 1e-2, l_3 > 1e-4 l_1): the only case where the fast paths below use them.
+// The eigenvalues l_1 >= l_2 >= l_3 of a symmetric 3 x 3 matrix A (the Gram matrix J^T J of a
+// Jacobian), for one matrix (T = double) or for several at once (T = an Eigen array: the lanes are
+// independent chains of square roots and divisions that fill the pipeline one chain leaves idle).
 // They are the roots of A's characteristic cubic: with q = tr A / 3 and p^2 = |A - q I|^2 / 6,
 // those of B = (A - q I) / p are the roots t of t^3 - 3t - 2r, r = det B / 2 (Smith, "Eigenvalues
-// of a symmetric 3 x 3 matrix", CACM 1961, solves it with acos and cos). Here the largest and
-// the smallest root (-t(-r)) come from a polynomial seed and one Halley step, exact to a few
-// ulps where the roots are apart: no trigonometric call, a third of the time of the trigonometric
-// solution. Returns false otherwise (nearly conformal or flat cells, extreme scales, NaN).
+// of a symmetric 3 x 3 matrix", CACM 1961, solves it with acos and cos). Here the largest root
+// and the smallest, -t(-r), come from a polynomial seed and one Halley step: no trigonometric call,
+// and exact to a few ulps of l_1 where the roots are apart, which `are_separated` checks (l is
+// meaningless otherwise, e.g. NaN when A = q I).
+inline double clamp_unit(double x) { return std::clamp(x, -1., 1.); }
+template <class Lanes> Lanes clamp_unit(const Lanes& x) { return x.max(-1.).min(1.); }
+
+template <class T>
+std::array<T, 3> symmetric_eigenvalues(const T& a00, const T& a11, const T& a22, const T& a01, const T& a02, const T& a12)
+{
+  using std::sqrt;
+  // The largest root of t^3 - 3t - 2r is 1 + e with e^2 (3 + e) = w^2, w = sqrt(2 + 2r); e is
+  // analytic in w on [0, 2], and this degree-7 least-squares fit in x = w - 1 is within 1.2e-7 of
+  // it (Estrin's scheme keeps the dependency chain short).
+  const auto seed = [](const T& w) -> T {
+    const T x = w - 1., x2 = x * x, x4 = x2 * x2;
+    return 1.53208891261343982 + 0.49481809700031087 * x + (-0.031019315777351064 + 0.0049332218603241364 * x) * x2 +
+           ((-0.0010031790380941544 + 0.00023087870698921864 * x) + (-6.6317914159677585e-05 + 1.7787376525066081e-05 * x) * x2) * x4;
+  };
+  const auto halley = [](const T& t, const T& r) -> T {
+    const T t2 = t * t, f = t * (t2 - 3.) - 2. * r, df = 3. * (t2 - 1.);
+    return t - 2. * f * df / (2. * df * df - 6. * f * t);
+  };
+  const T q = (a00 + a11 + a22) * (1. / 3), b0 = a00 - q, b1 = a11 - q, b2 = a22 - q;
+  const T p2 = (b0 * b0 + b1 * b1 + b2 * b2 + 2. * (a01 * a01 + a02 * a02 + a12 * a12)) * (1. / 6);
+  const T p = sqrt(p2);
+  const T det_b = b0 * (b1 * b2 - a12 * a12) - a01 * (a01 * b2 - a12 * a02) + a02 * (a01 * a12 - b1 * a02);
+  const T r = clamp_unit(T(det_b / (2. * p2 * p)));
+  const T t1 = halley(seed(sqrt(2. + 2. * r)), r), t3 = -halley(seed(sqrt(2. - 2. * r)), -r);
+  return {q + p * t1, q - p * (t1 + t3), q + p * t3};
+}
+
+// Whether the eigenvalues l of a Gram matrix of the given trace are apart enough for the fast
+// paths below (relative gaps above 1e-2, l_3 > 1e-4 l_1) and the trace is far from overflow.
+inline bool are_separated(double trace, const Vector<3>& l)
+{
+  return trace > 1e-100 && trace < 1e100 && l[0] - l[1] > 1e-2 * l[0] && l[1] - l[2] > 1e-2 * l[0] && l[2] > 1e-4 * l[0];
+}
+
 inline bool separated_gram_eigenvalues(const Matrix<3>& J, Matrix<3>& A, Vector<3>& l)
 {
   A.noalias() = J.transpose() * J;
-  const double trace = A.trace();
-  if(!(trace > 1e-100 && trace < 1e100)) return false;
-  const double q = trace * (1. / 3), b0 = A(0, 0) - q, b1 = A(1, 1) - q, b2 = A(2, 2) - q;
-  const double a01 = A(0, 1), a02 = A(0, 2), a12 = A(1, 2);
-  const double p2 = (b0 * b0 + b1 * b1 + b2 * b2 + 2 * (a01 * a01 + a02 * a02 + a12 * a12)) * (1. / 6);
-  if(!(p2 > 1e-12 * q * q)) return false;
-  const double p = std::sqrt(p2);
-  const double det_b = b0 * (b1 * b2 - a12 * a12) - a01 * (a01 * b2 - a12 * a02) + a02 * (a01 * a12 - b1 * a02);
-  const double r = std::clamp(det_b / (2 * p2 * p), -1., 1.);
-  const double t1 = halley_step(largest_root_seed(std::sqrt(2 + 2 * r)), r);
-  const double t3 = -halley_step(largest_root_seed(std::sqrt(2 - 2 * r)), -r);
-  l = Vector<3>(q + p * t1, q - p * (t1 + t3), q + p * t3);
-  return l[0] - l[1] > 1e-2 * l[0] && l[1] - l[2] > 1e-2 * l[0] && l[2] > 1e-4 * l[0];
+  const std::array<double, 3> roots = symmetric_eigenvalues(A(0, 0), A(1, 1), A(2, 2), A(0, 1), A(0, 2), A(1, 2));
+  l = Vector<3>(roots[0], roots[1], roots[2]);
+  return are_separated(A.trace(), l);
 }
 
 // Values only: from the separated eigenvalues (about a fifth of the full decomposition's cost),
