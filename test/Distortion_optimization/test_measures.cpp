@@ -295,8 +295,7 @@ TEST(Measures, GradientWithoutSingularVectorsMatchesTheExplicitOnes)
   EXPECT_LT(fast_path, 400);
 }
 
-// The kernel on several cells at once (eight Gram eigenvalue solves in parallel lanes in 3D) gives
-// what it gives cell by cell: on separated and nearly conformal cells (the fallback), an inverted
+// The kernel on several cells at once (eight cells in SIMD lanes) gives what it gives cell by cell: on separated and nearly conformal cells (the fallback), an inverted
 // one, a flat one and one with a NaN vertex, over a count that is not a multiple of the lanes.
 template <int n>
 void check_batched_kernel()
@@ -330,12 +329,14 @@ void check_batched_kernel()
       std::array<Vector<n>, n + 1> g;
       Vector<n> s;
       const double v = DO::internal::cell_distortion<n>(m, map, c, g, &s);
+      // The same formulas; only the Jacobian's products may be ordered differently.
       for(double batched : {values[c], values_only[c]}) {
         if(std::isnan(v)) EXPECT_TRUE(std::isnan(batched)) << m.name() << " cell " << c;
-        else EXPECT_EQ(batched, v) << m.name() << " cell " << c;
+        else if(std::isinf(v)) EXPECT_EQ(batched, v) << m.name() << " cell " << c;
+        else EXPECT_NEAR(batched, v, 1e-14 * v) << m.name() << " cell " << c;
       }
       if(!std::isfinite(v)) continue;
-      EXPECT_LE((sigma[c] - s).norm(), 1e-15 * s.norm()) << m.name() << " cell " << c;
+      EXPECT_LE((sigma[c] - s).norm(), 1e-14 * s.norm()) << m.name() << " cell " << c;
       for(int i = 0; i <= n; ++i) EXPECT_LE((gradients[c][i] - g[i]).norm(), 1e-13 * (1 + g[i].norm())) << m.name() << " cell " << c;
     }
   };

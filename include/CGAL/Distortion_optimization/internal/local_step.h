@@ -47,10 +47,8 @@ public:
       cell_value(problem.map.number_of_cells()), cell_ok(problem.map.number_of_cells()),
       last_step_(problem.number_of_vertices(), 0.)
   {
-    for(std::size_t c = 0; c < cell_value.size(); ++c) {
-      cell_value[c] = cell_distortion<n>(measure_, p_.map.jacobian(c));
-      cell_ok[c] = !is_inverted(p_.map, c);
-    }
+    cell_distortions<n>(measure_, p_.map, cell_value.size(), [](std::size_t c) { return c; }, cell_value.data());
+    for(std::size_t c = 0; c < cell_value.size(); ++c) cell_ok[c] = !is_inverted(p_.map, c);
   }
 
   // D(J_c) of the current map, and whether cell c has the orientation of its source (exact).

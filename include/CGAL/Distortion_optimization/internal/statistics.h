@@ -33,8 +33,10 @@ Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& meas
   s.max = -std::numeric_limits<double>::infinity();
   if(per_cell) per_cell->resize(s.cells);
   double sum_uniform = 0, sum_volume = 0;
+  std::vector<double> values(s.cells);
+  cell_distortions<n>(measure, map, s.cells, [](std::size_t c) { return c; }, values.data());
   for(std::size_t c = 0; c < s.cells; ++c) {
-    const double d = cell_distortion<n>(measure, map.jacobian(c));
+    const double d = values[c];
     if(std::isnan(d))
       throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number");
     if(per_cell) (*per_cell)[c] = d;
