@@ -158,38 +158,50 @@ private:
   // its free vertices the slot of their entry, so that reweighting only rewrites values.
   void build_pattern()
   {
-    // Column by column from the rings (no triplet list: it would be the peak of the whole run).
-    Eigen::VectorXi column_size = Eigen::VectorXi::Zero(free_count_);
-    std::vector<int> neighbours;
-    auto free_neighbours = [&](std::size_t a) {
+    // Column by column from the rings, straight into compressed storage (no triplet list: it
+    // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
+    // their rows in parallel, each column into its own segment.
+    std::vector<std::uint32_t> column_vertex(free_count_);
+    for(std::size_t v = 0; v < free_index_.size(); ++v)
+      if(free_index_[v] >= 0) column_vertex[free_index_[v]] = static_cast<std::uint32_t>(v);
+    const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
+      static thread_local std::vector<int> neighbours;
       neighbours.clear();
+      const std::uint32_t a = column_vertex[column];
       for(std::uint32_t k = p_.ring_begin[a]; k < p_.ring_begin[a + 1]; ++k)
         for(auto b : p_.map.cells[p_.ring[k].cell])
           if(free_index_[b] >= 0) neighbours.push_back(free_index_[b]);
       std::sort(neighbours.begin(), neighbours.end());
       neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+      return neighbours;
     };
-    for(std::size_t a = 0; a < free_index_.size(); ++a)
-      if(free_index_[a] >= 0) { free_neighbours(a); column_size[free_index_[a]] = static_cast<int>(neighbours.size()); }
+    std::vector<int> offset(free_count_ + 1, 0);
+    workers_.for_each(free_count_, 1024, [&](std::size_t j) { offset[j + 1] = static_cast<int>(free_neighbours(j).size()); });
+    for(int j = 0; j < free_count_; ++j) offset[j + 1] += offset[j];
     P_.resize(free_count_, free_count_);
-    P_.reserve(column_size);
-    for(std::size_t a = 0; a < free_index_.size(); ++a)
-      if(free_index_[a] >= 0) {
-        free_neighbours(a);
-        for(int b : neighbours) P_.insert(b, free_index_[a]) = 0.;
-      }
-    P_.makeCompressed();
-    slots_.clear();
-    slots_.reserve(moving_cells_.size() * (n + 1) * (n + 1));
-    for(std::uint32_t c : moving_cells_)
-      for(auto a : p_.map.cells[c])
-        for(auto b : p_.map.cells[c]) {
-          if(free_index_[a] < 0 || free_index_[b] < 0) { slots_.push_back(-1); continue; }
-          const int column = free_index_[b], row = free_index_[a];
-          const int* begin = P_.innerIndexPtr() + P_.outerIndexPtr()[column];
-          const int* end = P_.innerIndexPtr() + P_.outerIndexPtr()[column + 1];
-          slots_.push_back(static_cast<int>(std::lower_bound(begin, end, row) - P_.innerIndexPtr()));
+    P_.resizeNonZeros(offset[free_count_]);
+    std::copy(offset.begin(), offset.end(), P_.outerIndexPtr());
+    std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
+    workers_.for_each(free_count_, 1024, [&](std::size_t j) {
+      const std::vector<int>& rows = free_neighbours(j);
+      std::copy(rows.begin(), rows.end(), P_.innerIndexPtr() + offset[j]);
+    });
+    // Where each entry of each cell's (n+1) x (n+1) stiffness goes in P (-1: a fixed vertex).
+    constexpr std::size_t entries = (n + 1) * (n + 1);
+    slots_.assign(moving_cells_.size() * entries, -1);
+    workers_.for_each(moving_cells_.size(), 1024, [&](std::size_t i) {
+      const auto& cell = p_.map.cells[moving_cells_[i]];
+      int* slot = &slots_[i * entries];
+      for(auto a : cell)
+        for(auto b : cell) {
+          if(free_index_[a] >= 0 && free_index_[b] >= 0) {
+            const int* begin = P_.innerIndexPtr() + offset[free_index_[b]];
+            const int* end = P_.innerIndexPtr() + offset[free_index_[b] + 1];
+            *slot = static_cast<int>(std::lower_bound(begin, end, free_index_[a]) - P_.innerIndexPtr());
+          }
+          ++slot;
         }
+    });
   }
 
   // Refills P with the cell stiffnesses w(c) G^T G, reweighted by the measure's laplacian_weight

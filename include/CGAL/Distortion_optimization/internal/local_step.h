@@ -42,13 +42,16 @@ public:
   static constexpr int max_backtracks = 40;
   static constexpr double rounding = 64 * std::numeric_limits<double>::epsilon();
 
-  Local_step(Optimization_problem<n>& problem, const Measure& measure, Local_solver solver)
+  // The start's cell values and orientations are computed on the given workers.
+  Local_step(Optimization_problem<n>& problem, const Measure& measure, Local_solver solver, const Workers& workers)
     : p_(problem), measure_(measure), solver_(solver),
       cell_value(problem.map.number_of_cells()), cell_ok(problem.map.number_of_cells()),
       last_step_(problem.number_of_vertices(), 0.)
   {
-    cell_distortions<n>(measure_, p_.map, cell_value.size(), [](std::size_t c) { return c; }, cell_value.data());
-    for(std::size_t c = 0; c < cell_value.size(); ++c) cell_ok[c] = !is_inverted(p_.map, c);
+    workers.for_each_block(cell_value.size(), 1024, [&](std::size_t first, std::size_t size) {
+      cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return first + i; }, &cell_value[first]);
+      for(std::size_t c = first; c < first + size; ++c) cell_ok[c] = !is_inverted(p_.map, c);
+    });
   }
 
   // D(J_c) of the current map, and whether cell c has the orientation of its source (exact).

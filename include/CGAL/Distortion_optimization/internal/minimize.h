@@ -51,7 +51,7 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
 {
   const auto start = std::chrono::steady_clock::now();
   const Workers workers(options.threads);
-  Local_step<n, Measure> step(problem, measure, options.solver);
+  Local_step<n, Measure> step(problem, measure, options.solver, workers);
   for(std::size_t c = 0; c < step.cell_value.size(); ++c) {
     if(std::isnan(step.cell_value[c]))
       throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number");
