@@ -231,22 +231,34 @@ private:
           stiffness[i] = (p_.cell_weight[c] * factor) * (G.transpose() * G);
         }
       });
-      for(std::size_t i = 0; i < count; ++i) {
-        const std::uint32_t c = moving_cells_[first + i];
-        const auto& cell = p_.map.cells[c];
-        const double w = p_.cell_weight[c];
-        if(g)
+      // The scatter: each thread owns a range of free vertices (rows of g and rhs, columns of P)
+      // and adds, in cell order, the contributions that land there. Every sum thus has the
+      // sequential order, whatever the number of threads.
+      const std::size_t parts = static_cast<std::size_t>(workers_.threads());
+      workers_.for_each(parts, 1, [&](std::size_t part) {
+        const int first_free = static_cast<int>(free_count_ * part / parts);
+        const int last_free = static_cast<int>(free_count_ * (part + 1) / parts);
+        const int first_slot = P_.outerIndexPtr()[first_free], last_slot = P_.outerIndexPtr()[last_free];
+        const auto owned = [&](int f) { return f >= first_free && f < last_free; };
+        for(std::size_t i = 0; i < count; ++i) {
+          const std::uint32_t c = moving_cells_[first + i];
+          const auto& cell = p_.map.cells[c];
+          const double w = p_.cell_weight[c];
+          if(g)
+            for(int a = 0; a <= n; ++a)
+              if(owned(free_index_[cell[a]]) && gradient[i][a].allFinite())
+                g->row(free_index_[cell[a]]) += w * gradient[i][a].transpose();
+          const int* slot = &slots_[(first + i) * (n + 1) * (n + 1)];
           for(int a = 0; a <= n; ++a)
-            if(free_index_[cell[a]] >= 0 && gradient[i][a].allFinite())
-              g->row(free_index_[cell[a]]) += w * gradient[i][a].transpose();
-        const int* slot = &slots_[(first + i) * (n + 1) * (n + 1)];
-        for(int a = 0; a <= n; ++a)
-          for(int b = 0; b <= n; ++b, ++slot) {
-            if(*slot >= 0) P_.valuePtr()[*slot] += stiffness[i](a, b);
-            else if(rhs && free_index_[cell[a]] >= 0)
-              rhs->row(free_index_[cell[a]]) -= stiffness[i](a, b) * p_.map.target[cell[b]].transpose();
-          }
-      }
+            for(int b = 0; b <= n; ++b, ++slot) {
+              if(*slot >= 0) {
+                if(*slot >= first_slot && *slot < last_slot) P_.valuePtr()[*slot] += stiffness[i](a, b);
+              } else if(rhs && owned(free_index_[cell[a]])) {
+                rhs->row(free_index_[cell[a]]) -= stiffness[i](a, b) * p_.map.target[cell[b]].transpose();
+              }
+            }
+        }
+      });
     }
   }
 
