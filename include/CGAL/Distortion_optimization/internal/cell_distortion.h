@@ -32,19 +32,19 @@ struct Has_value_without_svd<Measure, n,
 
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
-// D(J) and, if dJ is given, dD/dJ in 3D from the separated eigenvalues l of A = J^T J (svd.h):
-// sigma_3 from the determinant (so that it carries the sign), and the singular vectors only
-// through Sylvester's formula.
+// D(J) and, if dJ is given, dD/dJ (NaN where D is infinite) in 3D from the separated eigenvalues
+// l of A = J^T J (svd.h): the singular vectors only through Sylvester's formula.
 template <class Measure>
 double distortion_from_gram(const Measure& measure, const Matrix<3>& J, const Matrix<3>& A, const Vector<3>& l,
                             Matrix<3>* dJ, Vector<3>* sigma)
 {
-  const double s1 = std::sqrt(l[0]), s2 = std::sqrt(l[1]);
-  const Vector<3> s(s1, s2, J.determinant() / (s1 * s2));
+  const Vector<3> s = signed_singular_values_from_gram(J, l);
   const double value = measure.template value<3>(s);
   if(sigma) *sigma = s;
-  if(dJ && value < std::numeric_limits<double>::infinity())
-    *dJ = gram_spectral_product(J, A, l, s, measure.template gradient<3>(s));
+  if(dJ) {
+    if(value < std::numeric_limits<double>::infinity()) *dJ = gram_spectral_product(J, A, l, s, measure.template gradient<3>(s));
+    else dJ->setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
   return value;
 }
 
@@ -155,17 +155,13 @@ void cell_distortions(const Measure& measure, const Simplicial_map<n>& map, std:
     for(std::size_t i = 0; i < m; ++i) {
       const std::size_t k = first + i;
       Vector<n>* s = sigma ? sigma + k : nullptr;
+      bool done = false;   // by the batched eigenvalues; otherwise cell by cell
       if constexpr(batched) {
         const Vector<3> li(l[0][i], l[1][i], l[2][i]);
-        if(are_separated(A[i].trace(), li)) values[k] = distortion_from_gram(measure, J[i], A[i], li, vertex_gradients ? &dJ : nullptr, s);
-        else if(vertex_gradients) values[k] = cell_distortion<n>(measure, J[i], dJ, s);
-        else values[k] = s ? cell_distortion<n>(measure, J[i], dJ, s) : cell_distortion<n>(measure, J[i]);
-        if(vertex_gradients && !(values[k] < std::numeric_limits<double>::infinity())) dJ.setConstant(not_a_number);
-      } else if(vertex_gradients || s) {
-        values[k] = cell_distortion<n>(measure, J[i], dJ, s);
-      } else {
-        values[k] = cell_distortion<n>(measure, J[i]);
+        if((done = are_separated(A[i].trace(), li)))
+          values[k] = distortion_from_gram(measure, J[i], A[i], li, vertex_gradients ? &dJ : nullptr, s);
       }
+      if(!done) values[k] = vertex_gradients || s ? cell_distortion<n>(measure, J[i], dJ, s) : cell_distortion<n>(measure, J[i]);
       if(vertex_gradients) vertex_gradients_from_jacobian_gradient(map, cell_at(k), dJ, vertex_gradients[k]);
     }
   }

@@ -161,9 +161,7 @@ private:
     // Column by column from the rings, straight into compressed storage (no triplet list: it
     // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
     // their rows in parallel, each column into its own segment.
-    std::vector<std::uint32_t> column_vertex(free_count_);
-    for(std::size_t v = 0; v < free_index_.size(); ++v)
-      if(free_index_[v] >= 0) column_vertex[free_index_[v]] = static_cast<std::uint32_t>(v);
+    const std::vector<std::uint32_t> column_vertex = free_vertices(p_);   // free_index_'s inverse
     const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
       static thread_local std::vector<int> neighbours;
       neighbours.clear();

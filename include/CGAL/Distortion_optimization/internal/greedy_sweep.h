@@ -101,15 +101,6 @@ void sorted_sweep(Local_step<n, Measure>& step, const std::vector<std::uint32_t>
   for(const auto& kv : keyed) step.optimize(kv.second);
 }
 
-template <int n>
-std::vector<std::uint32_t> free_vertices(const Optimization_problem<n>& p)
-{
-  std::vector<std::uint32_t> vertices;
-  for(std::size_t v = 0; v < p.number_of_vertices(); ++v)
-    if(p.is_free[v]) vertices.push_back(static_cast<std::uint32_t>(v));
-  return vertices;
-}
-
 template <int n, class Measure>
 void greedy_sweep(Local_step<n, Measure>& step, Vertex_order order)
 {

@@ -71,6 +71,16 @@ struct Optimization_problem
   }
 };
 
+// The free vertices in increasing order (the global step numbers its unknowns in this order).
+template <int n>
+std::vector<std::uint32_t> free_vertices(const Optimization_problem<n>& p)
+{
+  std::vector<std::uint32_t> vertices;
+  for(std::size_t v = 0; v < p.number_of_vertices(); ++v)
+    if(p.is_free[v]) vertices.push_back(static_cast<std::uint32_t>(v));
+  return vertices;
+}
+
 } // namespace internal
 } // namespace Distortion_optimization
 } // namespace CGAL

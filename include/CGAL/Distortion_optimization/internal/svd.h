@@ -214,16 +214,21 @@ inline bool separated_gram_eigenvalues(const Matrix<3>& J, Matrix<3>& A, Vector<
   return are_separated(A.trace(), l);
 }
 
+// The signed singular values of J from the separated eigenvalues l of J^T J: sigma_3 from the
+// determinant, so that it carries its sign.
+inline Vector<3> signed_singular_values_from_gram(const Matrix<3>& J, const Vector<3>& l)
+{
+  const double s1 = std::sqrt(l[0]), s2 = std::sqrt(l[1]);
+  return Vector<3>(s1, s2, J.determinant() / (s1 * s2));
+}
+
 // Values only: from the separated eigenvalues (about a fifth of the full decomposition's cost),
-// sigma_3 from the determinant so that it carries its sign; otherwise the full decomposition.
+// otherwise the full decomposition.
 inline Vector<3> signed_singular_values(const Matrix<3>& J)
 {
   Matrix<3> A;
   Vector<3> l;
-  if(separated_gram_eigenvalues(J, A, l)) {
-    const double s1 = std::sqrt(l[0]), s2 = std::sqrt(l[1]);
-    return Vector<3>(s1, s2, J.determinant() / (s1 * s2));
-  }
+  if(separated_gram_eigenvalues(J, A, l)) return signed_singular_values_from_gram(J, l);
   Signed_svd<3> svd;
   signed_svd(J, svd);
   return svd.sigma;
