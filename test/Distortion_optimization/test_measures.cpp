@@ -247,7 +247,7 @@ void check_svd_free_form(const M& m)
   for(int trial = 0; trial < 50; ++trial) {
     const Matrix<n> J = random_well_conditioned<n>();
     Matrix<n> a = Matrix<n>::Zero(), b;
-    const double va = m.template value_without_svd<n>(J, &a);
+    const double va = DO::internal::distortion_from_invariants<n>(m, J, &a);
     DO::internal::Signed_svd<n> svd;
     DO::internal::signed_svd(J, svd);
     const double vb = m.template value<n>(svd.sigma);
@@ -295,8 +295,9 @@ TEST(Measures, GradientWithoutSingularVectorsMatchesTheExplicitOnes)
   EXPECT_LT(fast_path, 400);
 }
 
-// The kernel on several cells at once (eight cells in SIMD lanes) gives what it gives cell by cell: on separated and nearly conformal cells (the fallback), an inverted
-// one, a flat one and one with a NaN vertex, over a count that is not a multiple of the lanes.
+// The kernel on several cells at once (in SIMD lanes) gives what it gives cell by cell: on
+// separated and nearly conformal cells (the 3D fallback), an inverted one, a flat one and one
+// with a NaN vertex, over a count that is not a multiple of the lanes.
 template <int n>
 void check_batched_kernel()
 {
@@ -348,8 +349,8 @@ TEST(Measures, BatchedKernelMatchesTheKernelCellByCell3D) { check_batched_kernel
 
 TEST(Measures, SvdFreeFormsAgreeWithTheSvdForms)
 {
-  static_assert(DO::internal::Has_value_without_svd<DO::Symmetric_dirichlet, 3>::value, "");
-  static_assert(!DO::internal::Has_value_without_svd<DO::Conformal_dilatation, 3>::value, "");
+  static_assert(DO::internal::Has_invariant_form<DO::Symmetric_dirichlet, 3>::value, "");
+  static_assert(!DO::internal::Has_invariant_form<DO::Conformal_dilatation, 3>::value, "");
   check_svd_free_form<2>(DO::Symmetric_dirichlet());
   check_svd_free_form<3>(DO::Symmetric_dirichlet());
   check_svd_free_form<2>(DO::MIPS());

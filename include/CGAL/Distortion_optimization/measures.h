@@ -8,7 +8,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 #define CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 
-#include <CGAL/Distortion_optimization/internal/cofactor.h>
+#include <CGAL/Distortion_optimization/internal/lanes.h>
 
 #include <Eigen/Core>
 
@@ -46,10 +46,23 @@ A model provides, for n = 2 and n = 3:
 A measure is *regular* (RDM) when it is normalized and symmetric (and smooth almost everywhere,
 which holds for all the measures here).
 
-Optionally, a model may add `template <int n> double value_without_svd(const Jacobian<n>& J,
-Jacobian<n>* dJ) const` that returns D and, if `dJ` is not null, dD/dJ computed from
-invariants of J (norm, determinant, inverse) instead of an SVD; the package then uses it.
+Optionally, a model may add `template <int n, class T> T value_of_invariants(const
+Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const`: D as a function of the invariants of
+J and, if `dI` is not null, its partial derivatives in them. The package then uses it instead of an
+SVD, for one cell (T = double) or for several at once (T a vector of doubles on which arithmetic,
+comparisons and ?: act lane by lane). For a normalized measure its result is ignored where
+det J <= 0: the package returns +infinity there itself.
 */
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The invariants of a Jacobian through which some measures are written without its SVD:
+/// `norm2` = |J|_F^2 = sum of s_i^2, `cofactor_norm2` = |cof J|_F^2 = sum of the products of n-1
+/// distinct s_i^2 (so |J^-1|_F^2 = cofactor_norm2 / det^2), `det` = det J = product of the s_i.
+template <class T>
+struct Jacobian_invariants
+{
+  T norm2, cofactor_norm2, det;
+};
 
 namespace measures_internal {
 
@@ -64,11 +77,11 @@ double power(double x)
 }
 
 // (s_1 ... s_n)^(2/n), the scale of MIPS.
-template <int n>
-double mean_square_scale(double product)
+template <int n, class T>
+T mean_square_scale(const T& product)
 {
   if constexpr(n == 2) return product;
-  else return std::cbrt(product * product);
+  else return internal::lanewise_cbrt(product * product);
 }
 
 template <int n>
@@ -82,14 +95,6 @@ Singular_values<n> unit(int i)
 {
   return Singular_values<n>::Unit(i);
 }
-
-// What the measures that need no SVD share: det J, |J|^2 and the cofactor matrix.
-template <int n>
-struct Invariants : internal::Cofactor_and_determinant<n>
-{
-  double norm2;
-  explicit Invariants(const Jacobian<n>& J) : internal::Cofactor_and_determinant<n>(J), norm2(J.squaredNorm()) {}
-};
 
 template <class Measure, int n, class = void>
 struct Has_laplacian_weight : std::false_type {};
@@ -227,13 +232,11 @@ struct MIPS
     const double scale = measures_internal::mean_square_scale<n>(s.prod()), v = s.squaredNorm() / scale;
     return (2. / scale) * s - (2. / n) * v * s.cwiseInverse();
   }
-  template <int n>
-  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  template <int n, class T>
+  T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
-    measures_internal::Invariants<n> I(J);
-    if(!(I.det > 0)) return measures_internal::infinity;
-    const double scale = measures_internal::mean_square_scale<n>(I.det), v = I.norm2 / scale;
-    if(dJ) *dJ = (2. / scale) * J - (2. / n) * (v / I.det) * I.cofactor;
+    const T scale = measures_internal::mean_square_scale<n>(I.det), v = I.norm2 / scale;
+    if(dI) *dI = {1. / scale, T{}, (-2. / n) * v / I.det};
     return v;
   }
 };
@@ -296,18 +299,14 @@ struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_interna
     if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
     return (s.array() - s.array().cube().inverse()).matrix() / n;
   }
-  // |J|^2 + |J^-1|^2 with J^-T = C / det; derivative 2J - 2 J^-T J^-1 J^-T = 2J - 2 C C^T C / det^3.
-  template <int n>
-  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  // |J^-1|^2 = |cof J|^2 / det^2.
+  template <int n, class T>
+  T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
-    measures_internal::Invariants<n> I(J);
-    if(!(I.det > 0)) return measures_internal::infinity;
-    const double inverse_det = 1. / I.det;
-    if(dJ) {
-      const Jacobian<n> CCt = I.cofactor * I.cofactor.transpose();
-      *dJ = (J - (inverse_det * inverse_det * inverse_det) * (CCt * I.cofactor)) / n;
-    }
-    return (I.norm2 + I.cofactor.squaredNorm() * inverse_det * inverse_det) / (2 * n);
+    constexpr double half_n = 0.5 / n;
+    const T inverse_det = 1. / I.det, inverse_det2 = inverse_det * inverse_det;
+    if(dI) *dI = {internal::broadcast<T>(half_n), half_n * inverse_det2, (-2 * half_n) * I.cofactor_norm2 * inverse_det2 * inverse_det};
+    return half_n * (I.norm2 + I.cofactor_norm2 * inverse_det2);
   }
 };
 
@@ -330,14 +329,12 @@ struct Volume_distortion : measures_internal::Regular_measure<measures_internal:
     if(!(d > 0)) return measures_internal::nan_gradient<n>();
     return (d >= 1 ? d : -1. / d) * s.cwiseInverse();
   }
-  // d(det)/dJ = C, the cofactor matrix.
-  template <int n>
-  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  template <int n, class T>
+  T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
-    measures_internal::Invariants<n> I(J);
-    if(!(I.det > 0)) return measures_internal::infinity;
-    if(dJ) *dJ = (I.det >= 1 ? 1. : -1. / (I.det * I.det)) * I.cofactor;
-    return std::max(I.det, 1. / I.det);
+    const T inverse = 1. / I.det;
+    if(dI) *dI = {T{}, T{}, I.det >= 1. ? internal::broadcast<T>(1.) : -inverse * inverse};
+    return I.det >= 1. ? I.det : inverse;
   }
 };
 
@@ -358,11 +355,11 @@ struct Dirichlet : measures_internal::Unbounded_measure
   {
     return (2. / n) * s;
   }
-  template <int n>
-  double value_without_svd(const Jacobian<n>& J, Jacobian<n>* dJ) const
+  template <int n, class T>
+  T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
-    if(dJ) *dJ = (2. / n) * J;
-    return J.squaredNorm() / n;
+    if(dI) *dI = {internal::broadcast<T>(1. / n), T{}, T{}};
+    return I.norm2 / n;
   }
 };
 

@@ -2,12 +2,14 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The per-cell kernel: D(J) and its exact derivative dD/dJ = U diag(dD/dsigma) V^T.
-// Measures that can be written with invariants of J (norm, determinant, inverse) skip the SVD.
+// Measures that can be written with invariants of J (norms of J and of its cofactor matrix,
+// determinant) skip the SVD and evaluate several cells at once, one per SIMD lane (lanes.h).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
 
 #include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/internal/lanes.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
@@ -23,14 +25,76 @@ namespace Distortion_optimization {
 namespace internal {
 
 template <class Measure, int n, class = void>
-struct Has_value_without_svd : std::false_type {};
+struct Has_invariant_form : std::false_type {};
 
 template <class Measure, int n>
-struct Has_value_without_svd<Measure, n,
-  std::void_t<decltype(std::declval<const Measure&>().template value_without_svd<n>(
-    std::declval<const Matrix<n>&>(), static_cast<Matrix<n>*>(nullptr)))>> : std::true_type {};
+struct Has_invariant_form<Measure, n,
+  std::void_t<decltype(std::declval<const Measure&>().template value_of_invariants<n, double>(
+    std::declval<const Jacobian_invariants<double>&>(), static_cast<Jacobian_invariants<double>*>(nullptr)))>> : std::true_type {};
 
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// D(J) and, if dJ is given, dD/dJ through the measure's invariant form, for one cell (T = double)
+// or one cell per lane: NaN where J has a non-finite entry, +inf where a normalized measure sees
+// det J <= 0 (dJ is then meaningless; callers replace it by NaN). The chain rule needs
+// d|J|^2/dJ = 2J, d(det J)/dJ = cof J and d|cof J|^2/dJ, which is 2J in 2D (cof J is J turned a
+// quarter) and 2(|J|^2 J - J J^T J) in 3D (there |cof J|^2 = (|J|^4 - |J^T J|^2) / 2).
+template <int n, class T, class Measure>
+T distortion_from_invariants(const Measure& measure, bool normalized, const T (&J)[n][n], T (*dJ)[n])
+{
+  T C[n][n];
+  if constexpr(n == 2) {
+    C[0][0] = J[1][1], C[0][1] = -J[1][0], C[1][0] = -J[0][1], C[1][1] = J[0][0];
+  } else {
+    for(int r = 0; r < 3; ++r)
+      for(int c = 0; c < 3; ++c) {
+        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+        C[r][c] = J[r1][c1] * J[r2][c2] - J[r1][c2] * J[r2][c1];
+      }
+  }
+  Jacobian_invariants<T> I{T{}, T{}, T{}}, dI;
+  for(int r = 0; r < n; ++r)
+    for(int c = 0; c < n; ++c) {
+      I.norm2 += J[r][c] * J[r][c];
+      I.cofactor_norm2 += C[r][c] * C[r][c];
+    }
+  for(int c = 0; c < n; ++c) I.det += J[0][c] * C[0][c];
+  T value = measure.template value_of_invariants<n>(I, dJ ? &dI : nullptr);
+  if(normalized) value = I.det > 0. ? value : broadcast<T>(infinity);
+  value = I.norm2 * 0. == 0. ? value : broadcast<T>(not_a_number);   // |J|^2 is finite iff J is (or beyond 1e154)
+  if(dJ) {
+    const T a = 2. * (n == 2 ? dI.norm2 + dI.cofactor_norm2 : dI.norm2);
+    for(int r = 0; r < n; ++r)
+      for(int c = 0; c < n; ++c) dJ[r][c] = a * J[r][c] + dI.det * C[r][c];
+    if constexpr(n == 3) {
+      if(any_nonzero(dI.cofactor_norm2)) {
+        T A[3][3];   // J^T J
+        for(int r = 0; r < 3; ++r)
+          for(int c = r; c < 3; ++c) A[r][c] = A[c][r] = J[0][r] * J[0][c] + J[1][r] * J[1][c] + J[2][r] * J[2][c];
+        const T b = 2. * dI.cofactor_norm2;
+        for(int r = 0; r < 3; ++r)
+          for(int c = 0; c < 3; ++c)
+            dJ[r][c] += b * (I.norm2 * J[r][c] - (J[r][0] * A[0][c] + J[r][1] * A[1][c] + J[r][2] * A[2][c]));
+      }
+    }
+  }
+  return value;
+}
+
+// The same on an Eigen matrix (one cell).
+template <int n, class Measure>
+double distortion_from_invariants(const Measure& measure, const Matrix<n>& J, Matrix<n>* dJ)
+{
+  double j[n][n], dj[n][n];
+  for(int r = 0; r < n; ++r)
+    for(int c = 0; c < n; ++c) j[r][c] = J(r, c);
+  const double value = distortion_from_invariants<n>(measure, measure.is_normalized(), j, dJ ? dj : nullptr);
+  if(dJ)
+    for(int r = 0; r < n; ++r)
+      for(int c = 0; c < n; ++c) (*dJ)(r, c) = dj[r][c];
+  return value;
+}
 
 // D(J) and, if dJ is given, dD/dJ (NaN where D is infinite) in 3D from the separated eigenvalues
 // l of A = J^T J (svd.h): the singular vectors only through Sylvester's formula.
@@ -52,10 +116,10 @@ double distortion_from_gram(const Measure& measure, const Matrix<3>& J, const Ma
 template <int n, class Measure>
 double cell_distortion(const Measure& measure, const Matrix<n>& J)
 {
-  if(!J.allFinite())
+  if constexpr(Has_invariant_form<Measure, n>::value)
+    return distortion_from_invariants<n>(measure, J, nullptr);
+  else if(!J.allFinite())
     return not_a_number;
-  if constexpr(Has_value_without_svd<Measure, n>::value)
-    return measure.template value_without_svd<n>(J, nullptr);
   else
     return measure.template value<n>(signed_singular_values(J));
 }
@@ -67,8 +131,8 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
 {
   double value = not_a_number;
   if(J.allFinite()) {
-    if constexpr(Has_value_without_svd<Measure, n>::value) {
-      value = measure.template value_without_svd<n>(J, &dJ);
+    if constexpr(Has_invariant_form<Measure, n>::value) {
+      value = distortion_from_invariants<n>(measure, J, &dJ);
       if(sigma) *sigma = signed_singular_values(J);
     } else if constexpr(n == 2) {
       // With J = S + A, S = [E -H; H E] and A = [F G; G -F] (svd.h): dQ/dJ = S / 2Q and
@@ -98,7 +162,7 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
       }
     }
   }
-  if(!(value < std::numeric_limits<double>::infinity()))
+  if(!(value < infinity))
     dJ.setConstant(not_a_number);
   return value;
 }
@@ -115,27 +179,90 @@ void vertex_gradients_from_jacobian_gradient(const Simplicial_map<n>& map, std::
     vertex_gradients[i + 1] = G.col(i);
 }
 
-/// D(J_c) of cell c of a map and its derivative in the cell's n+1 target positions.
+// cell_distortions for measures with an invariant form: each lane gathers one cell's target edges
+// Ds and Dm^-1, then J = Ds Dm^-1, D, dD/dJ and G = dD/dJ Dm^-T are computed on all lanes at once.
+template <int n, class Measure, class CellAt>
+void distortions_from_invariants(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
+                                 double* values, std::array<Vector<n>, n + 1>* vertex_gradients, Vector<n>* sigma)
+{
+  using T = Cell_lanes;
+  constexpr int lanes = number_of_lanes<T>;
+  const bool normalized = measure.is_normalized();
+  for(std::size_t first = 0; first < count; first += lanes) {
+    const int m = static_cast<int>(std::min<std::size_t>(lanes, count - first));
+    T Ds[n][n], B[n][n], J[n][n], dJ[n][n];
+    for(int l = 0; l < lanes; ++l) {   // lanes past the count repeat the first cell
+      const std::size_t c = cell_at(first + (l < m ? l : 0));
+      const Vector<n>& x0 = map.target[map.cells[c][0]];
+      for(int j = 0; j < n; ++j) {
+        const Vector<n>& x = map.target[map.cells[c][j + 1]];
+        for(int i = 0; i < n; ++i) set_lane(Ds[i][j], l, x[i] - x0[i]);
+      }
+      for(int j = 0; j < n; ++j)
+        for(int i = 0; i < n; ++i) set_lane(B[i][j], l, map.inverse_rest[c](i, j));
+    }
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j) {
+        J[i][j] = Ds[i][0] * B[0][j];
+        for(int k = 1; k < n; ++k) J[i][j] += Ds[i][k] * B[k][j];
+      }
+    const T value = distortion_from_invariants<n>(measure, normalized, J, vertex_gradients ? dJ : nullptr);
+    for(int l = 0; l < m; ++l) values[first + l] = lane(value, l);
+    if(vertex_gradients) {
+      T G[n][n + 1];   // dD/dJ Dm^-T in columns 1..n (vertices 1..n), minus their sum in column 0
+      const auto finite = value < infinity;
+      for(int i = 0; i < n; ++i) {
+        G[i][0] = T{};
+        for(int j = 0; j < n; ++j) {
+          G[i][j + 1] = dJ[i][0] * B[j][0];
+          for(int k = 1; k < n; ++k) G[i][j + 1] += dJ[i][k] * B[j][k];
+          G[i][j + 1] = finite ? G[i][j + 1] : broadcast<T>(not_a_number);
+          G[i][0] -= G[i][j + 1];
+        }
+      }
+      for(int l = 0; l < m; ++l)
+        for(int j = 0; j <= n; ++j)
+          for(int i = 0; i < n; ++i) vertex_gradients[first + l][j][i] = lane(G[i][j], l);
+    }
+    if(sigma)
+      for(int l = 0; l < m; ++l) {
+        Matrix<n> Jl;
+        for(int i = 0; i < n; ++i)
+          for(int j = 0; j < n; ++j) Jl(i, j) = lane(J[i][j], l);
+        if(Jl.allFinite()) sigma[first + l] = signed_singular_values(Jl);
+      }
+  }
+}
+
+/// D(J_c) of cell c of a map and its derivative in the cell's n+1 target positions (with an
+/// invariant form, the lanes' arithmetic: the same value as among other cells, to the last bit).
 template <int n, class Measure>
 double cell_distortion(const Measure& measure, const Simplicial_map<n>& map, std::size_t c,
                        std::array<Vector<n>, n + 1>& vertex_gradients, Vector<n>* sigma = nullptr)
 {
-  Matrix<n> dJ;
-  const double value = cell_distortion<n>(measure, map.jacobian(c), dJ, sigma);
-  vertex_gradients_from_jacobian_gradient(map, c, dJ, vertex_gradients);
+  double value;
+  if constexpr(Has_invariant_form<Measure, n>::value) {
+    distortions_from_invariants<n>(measure, map, 1, [c](std::size_t) { return c; }, &value, &vertex_gradients, sigma);
+  } else {
+    Matrix<n> dJ;
+    value = cell_distortion<n>(measure, map.jacobian(c), dJ, sigma);
+    vertex_gradients_from_jacobian_gradient(map, c, dJ, vertex_gradients);
+  }
   return value;
 }
 
 /// The kernel on `count` cells of a map at once: values[k] = D(J_c) for c = cell_at(k) and, if
-/// given, the vertex gradients and signed singular values as above. In 3D, for measures that need
-/// singular values, the Gram eigenvalues of eight cells are solved together (svd.h): one cell's
-/// solve is a chain of dependent square roots and divisions, eight independent ones fill the
-/// pipeline and the SIMD lanes, for about half the time per cell.
+/// given, the vertex gradients and signed singular values as above. Measures with an invariant form
+/// take the lanes above. In 3D, for the others, the Gram eigenvalues of eight cells are solved
+/// together (svd.h): one cell's solve is a chain of dependent square roots and divisions, eight
+/// independent ones fill the pipeline and the SIMD lanes, for about half the time per cell.
 template <int n, class Measure, class CellAt>
 void cell_distortions(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
                       double* values, std::array<Vector<n>, n + 1>* vertex_gradients = nullptr, Vector<n>* sigma = nullptr)
 {
-  constexpr bool batched = n == 3 && !Has_value_without_svd<Measure, n>::value;
+  if constexpr(Has_invariant_form<Measure, n>::value)
+    return distortions_from_invariants<n>(measure, map, count, cell_at, values, vertex_gradients, sigma);
+  constexpr bool batched = n == 3;
   constexpr std::size_t lanes = batched ? 8 : 1;
   using Lanes = Eigen::Array<double, lanes, 1>;
   std::array<Matrix<n>, lanes> J, A;
