@@ -91,10 +91,14 @@ public:
     free_index_.assign(nv, -1);
     for(std::size_t v = 0; v < nv; ++v)
       if(p_.is_free[v]) free_index_[v] = free_count_++;
+    moving_position_.assign(p_.map.number_of_cells(), 0);
     for(std::size_t c = 0; c < p_.map.number_of_cells(); ++c) {
       bool moves = false;
       for(auto v : p_.map.cells[c]) moves = moves || p_.is_free[v];
-      if(moves) moving_cells_.push_back(static_cast<std::uint32_t>(c));
+      if(moves) {
+        moving_position_[c] = static_cast<std::uint32_t>(moving_cells_.size());
+        moving_cells_.push_back(static_cast<std::uint32_t>(c));
+      }
     }
     build_pattern();
     previous_solution_ = Eigen::MatrixXd::Zero(free_count_, n);
@@ -161,7 +165,8 @@ private:
     // Column by column from the rings, straight into compressed storage (no triplet list: it
     // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
     // their rows in parallel, each column into its own segment.
-    const std::vector<std::uint32_t> column_vertex = free_vertices(p_);   // free_index_'s inverse
+    column_vertex_ = free_vertices(p_);   // free_index_'s inverse
+    const std::vector<std::uint32_t>& column_vertex = column_vertex_;
     const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
       static thread_local std::vector<int> neighbours;
       neighbours.clear();
@@ -204,17 +209,21 @@ private:
 
   // Refills P with the cell stiffnesses w(c) G^T G, reweighted by the measure's laplacian_weight
   // for a global step (with the energy gradient accumulated into g), or not for the harmonic map
-  // (with the fixed vertices' contribution accumulated into rhs). The cells' parts are computed in
-  // parallel, block by block, then added in cell order (so that the sums do not depend on threads).
+  // (with the fixed vertices' contribution accumulated into rhs). Block by block of cells, the
+  // cells' parts are computed in parallel, then gathered in parallel by free vertex: column j of
+  // P and rows j of g and rhs take the contributions of vertex j's ring, in cell order (the ring's
+  // order), so that every sum has the sequential order whatever the number of threads.
   void refill(Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
-    constexpr std::size_t block = 8192;
+    constexpr std::size_t block = 8192;   // the block's parts stay in the L2 cache for the gather
     std::vector<Eigen::Matrix<double, n + 1, n + 1>> stiffness(std::min(block, moving_cells_.size()));
     std::vector<std::array<Vec, n + 1>> gradient(g ? stiffness.size() : 0);
     constexpr bool reweighted = measures_internal::Has_laplacian_weight<Measure, n>::value;
     std::vector<Vec> sigma(g && reweighted ? stiffness.size() : 0);
     std::vector<double> value(g ? stiffness.size() : 0);
+    std::vector<std::uint32_t> next(column_vertex_.size());   // each free vertex's first ring entry not gathered yet
+    for(std::size_t j = 0; j < next.size(); ++j) next[j] = p_.ring_begin[column_vertex_[j]];
     for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
       const std::size_t count = std::min(block, moving_cells_.size() - first);
       workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
@@ -229,32 +238,23 @@ private:
           stiffness[i] = (p_.cell_weight[c] * factor) * (G.transpose() * G);
         }
       });
-      // The scatter: each thread owns a range of free vertices (rows of g and rhs, columns of P)
-      // and adds, in cell order, the contributions that land there. Every sum thus has the
-      // sequential order, whatever the number of threads.
-      const std::size_t parts = static_cast<std::size_t>(workers_.threads());
-      workers_.for_each(parts, 1, [&](std::size_t part) {
-        const int first_free = static_cast<int>(free_count_ * part / parts);
-        const int last_free = static_cast<int>(free_count_ * (part + 1) / parts);
-        const int first_slot = P_.outerIndexPtr()[first_free], last_slot = P_.outerIndexPtr()[last_free];
-        const auto owned = [&](int f) { return f >= first_free && f < last_free; };
-        for(std::size_t i = 0; i < count; ++i) {
-          const std::uint32_t c = moving_cells_[first + i];
-          const auto& cell = p_.map.cells[c];
-          const double w = p_.cell_weight[c];
-          if(g)
-            for(int a = 0; a <= n; ++a)
-              if(owned(free_index_[cell[a]]) && gradient[i][a].allFinite())
-                g->row(free_index_[cell[a]]) += w * gradient[i][a].transpose();
-          const int* slot = &slots_[(first + i) * (n + 1) * (n + 1)];
-          for(int a = 0; a <= n; ++a)
-            for(int b = 0; b <= n; ++b, ++slot) {
-              if(*slot >= 0) {
-                if(*slot >= first_slot && *slot < last_slot) P_.valuePtr()[*slot] += stiffness[i](a, b);
-              } else if(rhs && owned(free_index_[cell[a]])) {
-                rhs->row(free_index_[cell[a]]) -= stiffness[i](a, b) * p_.map.target[cell[b]].transpose();
-              }
-            }
+      const std::uint32_t last_cell = moving_cells_[first + count - 1];
+      workers_.for_each(column_vertex_.size(), 256, [&](std::size_t j) {
+        const std::uint32_t end = p_.ring_begin[column_vertex_[j] + 1];
+        for(std::uint32_t& k = next[j]; k < end && p_.ring[k].cell <= last_cell; ++k) {
+          const std::uint32_t c = p_.ring[k].cell, a = p_.ring[k].local, i = moving_position_[c];
+          const std::size_t local = i - first;
+          if(g && gradient[local][a].allFinite())
+            g->row(j) += p_.cell_weight[c] * gradient[local][a].transpose();
+          const int* slot = &slots_[std::size_t(i) * (n + 1) * (n + 1)];
+          for(int b = 0; b <= n; ++b) {
+            const int s = slot[b * (n + 1) + a];   // entry (b, a): row of cell vertex b in column j
+            if(s >= 0) P_.valuePtr()[s] += stiffness[local](b, a);
+          }
+          if(rhs)
+            for(int b = 0; b <= n; ++b)
+              if(slot[a * (n + 1) + b] < 0)   // vertex b is fixed
+                rhs->row(j) -= stiffness[local](a, b) * p_.map.target[p_.map.cells[c][b]].transpose();
         }
       });
     }
@@ -324,6 +324,8 @@ private:
   std::vector<int> free_index_;
   int free_count_ = 0;
   std::vector<std::uint32_t> moving_cells_;
+  std::vector<std::uint32_t> moving_position_;   // of each moving cell in moving_cells_
+  std::vector<std::uint32_t> column_vertex_;     // the free vertex of each column of P
   Eigen::SparseMatrix<double> P_;
   std::vector<int> slots_;
   Eigen::MatrixXd previous_solution_;
