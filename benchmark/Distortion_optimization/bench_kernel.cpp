@@ -1,7 +1,9 @@
 // Energy + gradient throughput of the per-cell kernel, per measure, 2D and 3D, one thread:
 // for every cell, J = Ds Dm^-1, D(J), dD/dJ and the n+1 vertex gradients accumulated into a
 // per-vertex array (what one solver pass over the mesh costs), through the blocked kernel the solver
-// uses (cell_distortions: in 3D the Gram eigenvalues of eight cells are solved together). Also the 3x3 SVD variants.
+// uses (cell_distortions: measures with an invariant form, symmetric Dirichlet among them, take two
+// cells per SSE2 register; for the others, in 3D, the Gram eigenvalues of eight cells are solved
+// together). Also the 3x3 SVD variants.
 // Two sizes: a mesh that stays in the L2 cache (the kernel's own speed, and what a local solver
 // sees on a vertex ring) and a large one (bounded by memory bandwidth: each tet streams ~100 bytes).
 //

@@ -190,17 +190,18 @@ void distortions_from_invariants(const Measure& measure, const Simplicial_map<n>
   const bool normalized = measure.is_normalized();
   for(std::size_t first = 0; first < count; first += lanes) {
     const int m = static_cast<int>(std::min<std::size_t>(lanes, count - first));
-    T Ds[n][n], B[n][n], J[n][n], dJ[n][n];
+    T X[n + 1][n], B[n][n], Ds[n][n], J[n][n], dJ[n][n];
     for(int l = 0; l < lanes; ++l) {   // lanes past the count repeat the first cell
       const std::size_t c = cell_at(first + (l < m ? l : 0));
-      const Vector<n>& x0 = map.target[map.cells[c][0]];
-      for(int j = 0; j < n; ++j) {
-        const Vector<n>& x = map.target[map.cells[c][j + 1]];
-        for(int i = 0; i < n; ++i) set_lane(Ds[i][j], l, x[i] - x0[i]);
+      for(int j = 0; j <= n; ++j) {
+        const Vector<n>& x = map.target[map.cells[c][j]];
+        for(int i = 0; i < n; ++i) set_lane(X[j][i], l, x[i]);
       }
       for(int j = 0; j < n; ++j)
         for(int i = 0; i < n; ++i) set_lane(B[i][j], l, map.inverse_rest[c](i, j));
     }
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) Ds[i][j] = X[j + 1][i] - X[0][i];
     for(int i = 0; i < n; ++i)
       for(int j = 0; j < n; ++j) {
         J[i][j] = Ds[i][0] * B[0][j];
