@@ -91,14 +91,10 @@ public:
     free_index_.assign(nv, -1);
     for(std::size_t v = 0; v < nv; ++v)
       if(p_.is_free[v]) free_index_[v] = free_count_++;
-    moving_position_.assign(p_.map.number_of_cells(), 0);
     for(std::size_t c = 0; c < p_.map.number_of_cells(); ++c) {
       bool moves = false;
       for(auto v : p_.map.cells[c]) moves = moves || p_.is_free[v];
-      if(moves) {
-        moving_position_[c] = static_cast<std::uint32_t>(moving_cells_.size());
-        moving_cells_.push_back(static_cast<std::uint32_t>(c));
-      }
+      if(moves) moving_cells_.push_back(static_cast<std::uint32_t>(c));
     }
     build_pattern();
     previous_solution_ = Eigen::MatrixXd::Zero(free_count_, n);
@@ -165,8 +161,7 @@ private:
     // Column by column from the rings, straight into compressed storage (no triplet list: it
     // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
     // their rows in parallel, each column into its own segment.
-    column_vertex_ = free_vertices(p_);   // free_index_'s inverse
-    const std::vector<std::uint32_t>& column_vertex = column_vertex_;
+    const std::vector<std::uint32_t> column_vertex = free_vertices(p_);   // free_index_'s inverse
     const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
       static thread_local std::vector<int> neighbours;
       neighbours.clear();
@@ -205,25 +200,43 @@ private:
           ++slot;
         }
     });
+    // Each block's incidences of free vertices, by column of P and, within a column, in cell order:
+    // what refill gathers.
+    blocks_.assign((moving_cells_.size() + block - 1) / block, {});
+    workers_.for_each(blocks_.size(), 1, [&](std::size_t b) {
+      std::vector<std::uint64_t> keys;   // column in the high half, the incidence in the low one
+      for(std::size_t i = b * block; i < std::min(moving_cells_.size(), (b + 1) * block); ++i)
+        for(int a = 0; a <= n; ++a) {
+          const int column = free_index_[p_.map.cells[moving_cells_[i]][a]];
+          if(column >= 0) keys.push_back(std::uint64_t(column) << 32 | ((i - b * block) * (n + 1) + a));
+        }
+      std::sort(keys.begin(), keys.end());
+      Block_incidences& incidences = blocks_[b];
+      for(std::size_t k = 0; k < keys.size(); ++k) {
+        if(k == 0 || keys[k] >> 32 != keys[k - 1] >> 32) {
+          incidences.columns.push_back(static_cast<std::uint32_t>(keys[k] >> 32));
+          incidences.begin.push_back(static_cast<std::uint32_t>(k));
+        }
+        incidences.entries.push_back(static_cast<std::uint32_t>(keys[k]));
+      }
+      incidences.begin.push_back(static_cast<std::uint32_t>(keys.size()));
+    });
   }
 
   // Refills P with the cell stiffnesses w(c) G^T G, reweighted by the measure's laplacian_weight
   // for a global step (with the energy gradient accumulated into g), or not for the harmonic map
   // (with the fixed vertices' contribution accumulated into rhs). Block by block of cells, the
-  // cells' parts are computed in parallel, then gathered in parallel by free vertex: column j of
-  // P and rows j of g and rhs take the contributions of vertex j's ring, in cell order (the ring's
-  // order), so that every sum has the sequential order whatever the number of threads.
+  // cells' parts are computed in parallel, then gathered in parallel by column: column j of P and
+  // rows j of g and rhs take their contributions in cell order, so that every sum has the
+  // sequential order whatever the number of threads.
   void refill(Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
-    constexpr std::size_t block = 8192;   // the block's parts stay in the L2 cache for the gather
     std::vector<Eigen::Matrix<double, n + 1, n + 1>> stiffness(std::min(block, moving_cells_.size()));
     std::vector<std::array<Vec, n + 1>> gradient(g ? stiffness.size() : 0);
     constexpr bool reweighted = measures_internal::Has_laplacian_weight<Measure, n>::value;
     std::vector<Vec> sigma(g && reweighted ? stiffness.size() : 0);
     std::vector<double> value(g ? stiffness.size() : 0);
-    std::vector<std::uint32_t> next(column_vertex_.size());   // each free vertex's first ring entry not gathered yet
-    for(std::size_t j = 0; j < next.size(); ++j) next[j] = p_.ring_begin[column_vertex_[j]];
     for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
       const std::size_t count = std::min(block, moving_cells_.size() - first);
       workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
@@ -232,21 +245,23 @@ private:
                               &value[begin], &gradient[begin], reweighted ? &sigma[begin] : nullptr);
         for(std::size_t i = begin; i < begin + size; ++i) {
           const std::uint32_t c = moving_cells_[first + i];
+          const double w = p_.cell_weight[c];
           double factor = 1;
           if constexpr(reweighted) if(g) factor = measures_internal::laplacian_weight<n>(measure_, sigma[i]);
           const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
-          stiffness[i] = (p_.cell_weight[c] * factor) * (G.transpose() * G);
+          stiffness[i] = (w * factor) * (G.transpose() * G);
+          if(g)
+            for(Vec& x : gradient[i]) x = w * x;
         }
       });
-      const std::uint32_t last_cell = moving_cells_[first + count - 1];
-      workers_.for_each(column_vertex_.size(), 256, [&](std::size_t j) {
-        const std::uint32_t end = p_.ring_begin[column_vertex_[j] + 1];
-        for(std::uint32_t& k = next[j]; k < end && p_.ring[k].cell <= last_cell; ++k) {
-          const std::uint32_t c = p_.ring[k].cell, a = p_.ring[k].local, i = moving_position_[c];
-          const std::size_t local = i - first;
+      const Block_incidences& incidences = blocks_[first / block];
+      workers_.for_each(incidences.columns.size(), 64, [&](std::size_t t) {
+        const std::uint32_t j = incidences.columns[t];
+        for(std::uint32_t k = incidences.begin[t]; k < incidences.begin[t + 1]; ++k) {
+          const std::uint32_t local = incidences.entries[k] / (n + 1), a = incidences.entries[k] % (n + 1);
           if(g && gradient[local][a].allFinite())
-            g->row(j) += p_.cell_weight[c] * gradient[local][a].transpose();
-          const int* slot = &slots_[std::size_t(i) * (n + 1) * (n + 1)];
+            g->row(j) += gradient[local][a].transpose();
+          const int* slot = &slots_[(first + local) * (n + 1) * (n + 1)];
           for(int b = 0; b <= n; ++b) {
             const int s = slot[b * (n + 1) + a];   // entry (b, a): row of cell vertex b in column j
             if(s >= 0) P_.valuePtr()[s] += stiffness[local](b, a);
@@ -254,7 +269,7 @@ private:
           if(rhs)
             for(int b = 0; b <= n; ++b)
               if(slot[a * (n + 1) + b] < 0)   // vertex b is fixed
-                rhs->row(j) -= stiffness[local](a, b) * p_.map.target[p_.map.cells[c][b]].transpose();
+                rhs->row(j) -= stiffness[local](a, b) * p_.map.target[p_.map.cells[moving_cells_[first + local]][b]].transpose();
         }
       });
     }
@@ -324,8 +339,15 @@ private:
   std::vector<int> free_index_;
   int free_count_ = 0;
   std::vector<std::uint32_t> moving_cells_;
-  std::vector<std::uint32_t> moving_position_;   // of each moving cell in moving_cells_
-  std::vector<std::uint32_t> column_vertex_;     // the free vertex of each column of P
+  // refill's blocks of moving cells, small enough for their parts to stay in the L2 cache, and
+  // for each block the incidences of its cells' free vertices: the columns of P they fall in and,
+  // per column, (position of the cell in the block) * (n + 1) + (the vertex's place in the cell)
+  static constexpr std::size_t block = 8192;
+  struct Block_incidences
+  {
+    std::vector<std::uint32_t> columns, begin, entries;
+  };
+  std::vector<Block_incidences> blocks_;
   Eigen::SparseMatrix<double> P_;
   std::vector<int> slots_;
   Eigen::MatrixXd previous_solution_;
