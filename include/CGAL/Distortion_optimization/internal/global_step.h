@@ -275,18 +275,48 @@ private:
     }
   }
 
-  // Solves P X = B by conjugate gradients from the guess in X, to the given relative residual or
-  // number of iterations; the n columns are independent solves, one per thread.
+  // Solves P X = B by preconditioned conjugate gradients (the recurrences of Eigen's
+  // conjugate_gradient) from the guess in X, to the given relative residual or number of
+  // iterations. The n columns are independent solves, one per thread; the products with P run by
+  // rows (P is symmetric) on all threads, so that a thread done with its column helps the others.
   template <class Preconditioner>
   void solve(const Preconditioner& preconditioner, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
-             Eigen::Index iterations, double tolerance) const
+             int iterations, double tolerance) const
   {
+    const std::size_t size = static_cast<std::size_t>(free_count_);
+    const auto product = [&](const Eigen::VectorXd& u, Eigen::VectorXd& pu) {
+      workers_.for_each(size, 2048, [&](std::size_t i) {
+        double sum = 0;
+        for(int k = P_.outerIndexPtr()[i]; k < P_.outerIndexPtr()[i + 1]; ++k) sum += P_.valuePtr()[k] * u[P_.innerIndexPtr()[k]];
+        pu[i] = sum;
+      });
+    };
     workers_.for_each(n, 1, [&](std::size_t d) {
-      Eigen::VectorXd column = X.col(d);
-      Eigen::Index its = iterations;
-      double error = tolerance;
-      Eigen::internal::conjugate_gradient(P_, B.col(d), column, preconditioner, its, error);
-      X.col(d) = column;
+      const Eigen::VectorXd b = B.col(d);
+      Eigen::VectorXd x = X.col(d), r(size), z(size), p(size), q(size);
+      const double b2 = b.squaredNorm();
+      if(b2 == 0) {
+        X.col(d).setZero();
+        return;
+      }
+      const double threshold = std::max(tolerance * tolerance * b2, (std::numeric_limits<double>::min)());
+      product(x, q);
+      r = b - q;
+      if(r.squaredNorm() < threshold) return;
+      p = preconditioner.solve(r);
+      double rz = r.dot(p);
+      for(int it = 0; it < iterations; ++it) {
+        product(p, q);
+        const double alpha = rz / p.dot(q);
+        x += alpha * p;
+        r -= alpha * q;
+        if(r.squaredNorm() < threshold) break;
+        z = preconditioner.solve(r);
+        const double rz_old = rz;
+        rz = r.dot(z);
+        p = z + (rz / rz_old) * p;
+      }
+      X.col(d) = x;
     });
   }
 
