@@ -8,7 +8,7 @@
 //  - The global step d = -P^-1 g, with P the volume-weighted cotangent Laplacian of the source
 //    reweighted per cell by a factor of the cell's smallest singular value (the measure's
 //    `laplacian_weight`, in the spirit of the reweighted proxies of SLIM, Rabinovich et al. 2017),
-//    solved by warm-started Jacobi-preconditioned CG to a loose tolerance (one column per thread). The step is capped at
+//    solved by warm-started Jacobi-preconditioned CG to a loose tolerance. The step is capped at
 //    0.9 times the exact largest step before a cell degenerates (per cell, det(Ds + t dDs) is a
 //    quadratic in 2D, a cubic in 3D: its smallest positive root), then backtracks (Armijo), and is
 //    accepted only if CGAL's exact orientation predicate sees no flipped cell.
