@@ -106,8 +106,8 @@ double distortion_from_gram(const Measure& measure, const Matrix<3>& J, const Ma
   const double value = measure.template value<3>(s);
   if(sigma) *sigma = s;
   if(dJ) {
-    if(value < std::numeric_limits<double>::infinity()) *dJ = gram_spectral_product(J, A, l, s, measure.template gradient<3>(s));
-    else dJ->setConstant(std::numeric_limits<double>::quiet_NaN());
+    if(value < infinity) *dJ = gram_spectral_product(J, A, l, s, measure.template gradient<3>(s));
+    else dJ->setConstant(not_a_number);
   }
   return value;
 }
@@ -141,7 +141,7 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
       const Vector<2> s = p.signed_singular_values(J);
       value = measure.template value<2>(s);
       if(sigma) *sigma = s;
-      if(value < std::numeric_limits<double>::infinity()) {
+      if(value < infinity) {
         const Vector<2> g = measure.template gradient<2>(s);
         const double a = p.Q > 0 ? (g[0] + g[1]) / (2 * p.Q) : 0., b = p.R > 0 ? (g[0] - g[1]) / (2 * p.R) : 0.;
         dJ << a * p.E + b * p.F, -a * p.H + b * p.G,
@@ -157,7 +157,7 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
         signed_svd(J, svd);
         value = measure.template value<3>(svd.sigma);
         if(sigma) *sigma = svd.sigma;
-        if(value < std::numeric_limits<double>::infinity())
+        if(value < infinity)
           dJ.noalias() = svd.U * measure.template gradient<3>(svd.sigma).asDiagonal() * svd.V.transpose();
       }
     }
@@ -252,17 +252,12 @@ double cell_distortion(const Measure& measure, const Simplicial_map<n>& map, std
   return value;
 }
 
-/// The kernel on `count` cells of a map at once: values[k] = D(J_c) for c = cell_at(k) and, if
-/// given, the vertex gradients and signed singular values as above. Measures with an invariant form
-/// take the lanes above. In 3D, for the others, the Gram eigenvalues of eight cells are solved
-/// together (svd.h): one cell's solve is a chain of dependent square roots and divisions, eight
-/// independent ones fill the pipeline and the SIMD lanes, for about half the time per cell.
+// cell_distortions for measures that need singular values: in 3D, eight cells' Gram eigenvalues
+// at once, then each cell from them (or by its full SVD where they are too close).
 template <int n, class Measure, class CellAt>
-void cell_distortions(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
-                      double* values, std::array<Vector<n>, n + 1>* vertex_gradients = nullptr, Vector<n>* sigma = nullptr)
+void distortions_from_singular_values(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
+                                      double* values, std::array<Vector<n>, n + 1>* vertex_gradients, Vector<n>* sigma)
 {
-  if constexpr(Has_invariant_form<Measure, n>::value)
-    return distortions_from_invariants<n>(measure, map, count, cell_at, values, vertex_gradients, sigma);
   constexpr bool batched = n == 3;
   constexpr std::size_t lanes = batched ? 8 : 1;
   using Lanes = Eigen::Array<double, lanes, 1>;
@@ -293,6 +288,21 @@ void cell_distortions(const Measure& measure, const Simplicial_map<n>& map, std:
       if(vertex_gradients) vertex_gradients_from_jacobian_gradient(map, cell_at(k), dJ, vertex_gradients[k]);
     }
   }
+}
+
+/// The kernel on `count` cells of a map at once: values[k] = D(J_c) for c = cell_at(k) and, if
+/// given, the vertex gradients and signed singular values as above. Measures with an invariant form
+/// take the lanes above. In 3D, for the others, the Gram eigenvalues of eight cells are solved
+/// together (svd.h): one cell's solve is a chain of dependent square roots and divisions, eight
+/// independent ones fill the pipeline and the SIMD lanes, for about half the time per cell.
+template <int n, class Measure, class CellAt>
+void cell_distortions(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
+                      double* values, std::array<Vector<n>, n + 1>* vertex_gradients = nullptr, Vector<n>* sigma = nullptr)
+{
+  if constexpr(Has_invariant_form<Measure, n>::value)
+    distortions_from_invariants<n>(measure, map, count, cell_at, values, vertex_gradients, sigma);
+  else
+    distortions_from_singular_values<n>(measure, map, count, cell_at, values, vertex_gradients, sigma);
 }
 
 } // namespace internal
