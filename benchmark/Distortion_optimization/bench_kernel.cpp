@@ -14,6 +14,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "../../test/Distortion_optimization/reference_svd.h"
+
 #include <random>
 
 namespace DO = CGAL::Distortion_optimization;
@@ -45,7 +47,7 @@ DI::Simplicial_map<n> noisy_grid(int k)
   auto add = [&](const std::array<std::uint32_t, n + 1>& cell, const std::array<DI::Vector<n>, n + 1>& p) {
     DI::Matrix<n> Dm;
     for(int c = 0; c < n; ++c) Dm.col(c) = rest(p[c + 1]) - rest(p[0]);
-    map.add_cell(cell, Dm);
+    map.add_cell(cell, Dm, 1);
   };
   for(int l = 0; l < (n == 3 ? k : 1); ++l)
     for(int j = 0; j < k; ++j)
@@ -104,8 +106,8 @@ void energy_and_gradient(benchmark::State& state)
   state.SetLabel(n == 2 ? "triangles" : "tets");
 }
 
-// One cell at a time and without the scatter into the per-vertex array: what one isolated
-// evaluation of a cell's energy and vertex gradients costs.
+// One cell at a time (the blocked kernel on a block of one) and without the scatter into the
+// per-vertex array: what one isolated evaluation of a cell's energy and vertex gradients costs.
 template <int n, class Measure>
 void cell_energy_and_gradient(benchmark::State& state)
 {
@@ -116,7 +118,9 @@ void cell_energy_and_gradient(benchmark::State& state)
     double energy = 0;
     DI::Vector<n> sum = DI::Vector<n>::Zero();
     for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
-      energy += DI::cell_distortion<n>(measure, map, c, g);
+      double value;
+      DI::cell_distortions<n>(measure, map, 1, [c](std::size_t) { return c; }, &value, &g);
+      energy += value;
       sum += g[c % (n + 1)];
     }
     benchmark::DoNotOptimize(energy);
@@ -145,7 +149,7 @@ void svd(benchmark::State& state)
   for(auto _ : state)
     for(const auto& J : Js) {
       if constexpr(closed_form) DI::signed_svd(J, out);
-      else DI::signed_svd_jacobi(J, out);
+      else reference::signed_svd_jacobi(J, out);
       benchmark::DoNotOptimize(out.sigma.data());
     }
   state.SetItemsProcessed(state.iterations() * Js.size());

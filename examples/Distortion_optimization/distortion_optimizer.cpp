@@ -14,6 +14,7 @@
 #include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
+#include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
@@ -49,7 +50,25 @@ using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
 
 namespace {
 
-const char* usage =
+// The usage text; the measures come from the package's registry of built-in measures.
+std::string usage()
+{
+  const auto& known = DO::measure_names();
+  std::vector<std::string> words(known.begin(), known.end());
+  words.front() += " (default)";
+  words.push_back("or a product such as " + known[0] + "*" + known[3]);
+  std::string names;
+  std::size_t column = 15;   // where the text of NAME starts
+  for(const std::string& word : words) {
+    if(!names.empty()) {
+      const bool wrap = column + word.size() + 2 > 92;
+      names += wrap ? ",\n               " : ", ";
+      column = wrap ? 15 : column + 2;
+    }
+    names += word;
+    column += word.size();
+  }
+  return
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
   "         [--threads N] [--report R.json] [--schedule alternating|local|global]\n"
@@ -57,8 +76,7 @@ const char* usage =
   "               vertices and cells in the same order; a planar target has z = 0; without\n"
   "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
   "               each cell's distortion, for ParaView)\n"
-  "  NAME         conformal (default), condition, mips, isometric, arap, symmetric_dirichlet,\n"
-  "               volume, dirichlet, or a product such as conformal*isometric\n"
+  "  NAME         " + names + "\n"
   "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
   "               one 0-based vertex index per line. With free border vertices the boundary is\n"
   "               kept from crossing itself (global injectivity)\n"
@@ -71,6 +89,7 @@ const char* usage =
   "  --report     also write the results as JSON\n"
   "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
   "               harmonic start), local (the paper's sweeps only) or global\n";
+}
 
 struct Usage_error : std::runtime_error
 {
@@ -79,7 +98,7 @@ struct Usage_error : std::runtime_error
 
 struct Command_line
 {
-  std::string source, target, output, measure = "conformal", fix = "boundary", solver = "gd", report,
+  std::string source, target, output, measure = DO::measure_names()[0], fix = "boundary", solver = "gd", report,
     schedule = "alternating";
   std::size_t iterations = 100, threads = 1;
   double threshold = 1e-4;
@@ -404,10 +423,10 @@ int main(int argc, char** argv)
     return run(parse(argc, argv));
   } catch(const Usage_error& e) {
     if(!*e.what()) {   // --help
-      std::cout << usage;
+      std::cout << usage();
       return 0;
     }
-    std::cerr << "distortion_optimizer: " << e.what() << "\n" << usage;
+    std::cerr << "distortion_optimizer: " << e.what() << "\n" << usage();
     return 2;
   } catch(const std::exception& e) {
     std::cerr << "distortion_optimizer: " << e.what() << "\n";

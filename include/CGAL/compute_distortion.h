@@ -9,6 +9,7 @@
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
+#include <CGAL/Distortion_optimization/internal/named_parameters.h>
 #include <CGAL/Distortion_optimization/internal/statistics.h>
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 
@@ -24,17 +25,14 @@ namespace internal {
 
 // Evaluates an adapter's map (Triangle_mesh_adapter or C3t3_adapter) with the named parameters'
 // vertex weights, writing per-cell values to the optional cell_distortion_map.
-template <int n, class Adapter, class Measure, class NamedParameters>
+template <class Adapter, class Measure, class NamedParameters>
 Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np)
 {
-  std::vector<double> omega;
-  auto weights = CGAL::parameters::get_parameter(np, internal_np::vertex_weight_map);
-  if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
-    omega = vertex_weights(adapter.vertex_of, weights);
   auto cell_map = CGAL::parameters::get_parameter(np, internal_np::cell_distortion_map);
   constexpr bool wants_cells = !std::is_same<decltype(cell_map), CGAL::internal_np::Param_not_found>::value;
   std::vector<double> per_cell;
-  const Distortion_statistics stats = evaluate<n>(adapter.map, measure, omega, wants_cells ? &per_cell : nullptr);
+  const Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, read_vertex_weights(adapter, np),
+                                               wants_cells ? &per_cell : nullptr);
   if constexpr(wants_cells)
     for(std::size_t c = 0; c < per_cell.size(); ++c) put(cell_map, adapter.cell_of[c], per_cell[c]);
   return stats;
@@ -68,6 +66,8 @@ Each face's Jacobian is computed in the face's own frame (eq. 20 of the paper; f
   - `Distortion_optimization::parameters::vertex_weight_map`: omega(v) > 0; default 1
   - `Distortion_optimization::parameters::cell_distortion_map`: a writable face property map
     to `double` that receives each face's distortion; default none
+  - `CGAL::parameters::geom_traits`: the kernel whose orientation predicates count inverted faces
+    (and orient planar source faces); default the kernel of the vertex point map's points
 
 \returns the weighted means, energies, extreme values and the number of inverted faces (counted
 with exact orientation predicates: a face is inverted when its image's orientation differs from
@@ -82,10 +82,8 @@ std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::valu
 compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measure& measure,
                    const NamedParameters& np = parameters::default_values())
 {
-  namespace DO = Distortion_optimization;
-  const auto adapter = DO::internal::make_triangle_mesh_adapter(tm, target, np);
-
-  return DO::internal::evaluate_adapted<2>(adapter, measure, np);
+  const auto adapter = Distortion_optimization::internal::make_triangle_mesh_adapter(tm, target, np);
+  return Distortion_optimization::internal::evaluate_adapted(adapter, measure, np);
 }
 
 /*!
@@ -102,9 +100,8 @@ std::enable_if_t<Distortion_optimization::internal::Is_c3t3<C3T3>::value, Distor
 compute_distortion(const C3T3& c3t3, const TargetMap& target, const Measure& measure,
                    const NamedParameters& np = parameters::default_values())
 {
-  namespace DO = Distortion_optimization;
-  const DO::internal::C3t3_adapter<C3T3> adapter(c3t3, target);
-  return DO::internal::evaluate_adapted<3>(adapter, measure, np);
+  const auto adapter = Distortion_optimization::internal::make_c3t3_adapter(c3t3, target, np);
+  return Distortion_optimization::internal::evaluate_adapted(adapter, measure, np);
 }
 
 } // namespace CGAL

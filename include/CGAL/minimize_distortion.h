@@ -13,73 +13,10 @@
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <type_traits>
-#include <utility>
 
 namespace CGAL {
-namespace Distortion_optimization {
-namespace internal {
-
-// The options every minimize_distortion() overload shares, read from a named-parameter pack.
-template <class NamedParameters>
-Options read_options(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  Options o;
-  o.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), o.iterations);
-  o.threshold = choose_parameter(get_parameter(np, internal_np::convergence_threshold), o.threshold);
-  o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
-  o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
-  o.schedule = choose_parameter(get_parameter(np, internal_np::schedule), o.schedule);
-  o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
-  o.global_injectivity = choose_parameter(get_parameter(np, internal_np::preserve_global_injectivity), o.global_injectivity);
-  o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
-  o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
-                                      o.schedule != Schedule::LOCAL);
-  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
-  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };
-  if(o.threads < 0)
-    throw Invalid_input("the number of threads must be 0 (all) or positive");
-  if(!(o.threshold >= 0))
-    throw Invalid_input("the convergence threshold must be a non-negative number");
-  return o;
-}
-
-// Builds the problem from an adapter (Triangle_mesh_adapter or C3t3_adapter), reads vertex weights
-// and constraints from the named parameters (default_fixed(i) when no constraint map is given),
-// minimizes, and returns the problem so that the caller writes its targets back.
-template <int n, class Adapter, class Measure, class NamedParameters, class DefaultFixed>
-std::pair<Result, Optimization_problem<n>>
-minimize_adapted(Adapter& adapter, const Measure& measure, const NamedParameters& np, DefaultFixed default_fixed)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  Optimization_problem<n> problem;
-  problem.map = std::move(adapter.map);   // the adapter keeps only its vertex and cell handles
-  auto weights = get_parameter(np, internal_np::vertex_weight_map);
-  if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value)
-    problem.omega = vertex_weights(adapter.vertex_of, weights);
-  auto constrained = get_parameter(np, CGAL::internal_np::vertex_is_constrained);
-  problem.is_free.resize(adapter.vertex_of.size());
-  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i) {
-    if constexpr(std::is_same<decltype(constrained), CGAL::internal_np::Param_not_found>::value)
-      problem.is_free[i] = !default_fixed(i);
-    else
-      problem.is_free[i] = !get(constrained, adapter.vertex_of[i]);
-  }
-  problem.finalize(choose_parameter(get_parameter(np, internal_np::cell_weighting), Cell_weighting::AVERAGE_VOLUME));
-  Result result = minimize(problem, measure, read_options(np));
-  return {std::move(result), std::move(problem)};
-}
-
-} // namespace internal
-} // namespace Distortion_optimization
-
 /*!
 \ingroup PkgDistortionOptimizationRef
 
@@ -116,7 +53,12 @@ flattened (checked with exact predicates); the energy never increases.
     measures) or of the energy; default 1e-4
   - `Distortion_optimization::parameters::local_solver`: `GRADIENT_DESCENT` (default) or `BFGS`
   - `Distortion_optimization::parameters::vertex_order`: `SORTED_PER_SWEEP` (default) or `GREEDY`
-    (the paper's live priority queue)
+    (the paper's live priority queue); with more than one thread the parallel sweeps always use
+    the sorted order, and `GREEDY` applies to the one-thread sweep only
+  - `CGAL::parameters::geom_traits`: a model of `Kernel` whose orientation predicates decide, on
+    the coordinates the optimizer uses, the orientation of each source triangle (planar source)
+    and whether a target triangle is inverted; default the kernel of the vertex point map's points.
+    With a kernel with exact predicates (the default `Epick`, or `Epeck`) the guarantee below is exact.
   - `Distortion_optimization::parameters::schedule`: what an iteration does: `LOCAL` (the paper's
     sweep), `GLOBAL` (one preconditioned step of all free vertices) or `ALTERNATING` (default: both)
   - `Distortion_optimization::parameters::use_harmonic_start`: start from the harmonic map of the
@@ -145,18 +87,8 @@ std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::valu
 minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& measure,
                     const NamedParameters& np = parameters::default_values())
 {
-  namespace DO = Distortion_optimization;
-  auto adapter = DO::internal::make_triangle_mesh_adapter(tm, target, np);
-  auto solved = DO::internal::minimize_adapted<2>(adapter, measure, np, [&](std::size_t i) {
-    return static_cast<bool>(CGAL::is_border(adapter.vertex_of[i], tm));
-  });
-
-  using Point_2 = typename boost::property_traits<TargetMap>::value_type;
-  const auto& problem = solved.second;
-  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i)
-    if(problem.is_free[i])
-      put(target, adapter.vertex_of[i], Point_2(problem.map.target[i][0], problem.map.target[i][1]));
-  return solved.first;
+  auto adapter = Distortion_optimization::internal::make_triangle_mesh_adapter(tm, target, np);
+  return Distortion_optimization::internal::minimize_adapted(adapter, target, measure, np);
 }
 
 /*!
@@ -179,7 +111,9 @@ positive in the start map is ever inverted or flattened (exact predicates).
 \param np the named parameters of the triangle-mesh overload, with vertex maps keyed by
         `Vertex_handle`; `vertex_point_map` is not used (positions come from the triangulation).
         Default constraint: every vertex on the complex boundary (on a facet between a complex
-        cell and a cell outside the complex) is fixed.
+        cell and a cell outside the complex) is fixed. `CGAL::parameters::geom_traits` defaults to
+        the kernel of the triangulation's points; its `Orientation_3` decides source and target
+        orientations.
 */
 template <class C3T3, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
@@ -187,20 +121,8 @@ std::enable_if_t<Distortion_optimization::internal::Is_c3t3<C3T3>::value, Distor
 minimize_distortion(const C3T3& c3t3, TargetMap target, const Measure& measure,
                     const NamedParameters& np = parameters::default_values())
 {
-  namespace DO = Distortion_optimization;
-  DO::internal::C3t3_adapter<C3T3> adapter(c3t3, target);
-  auto solved = DO::internal::minimize_adapted<3>(adapter, measure, np, [&](std::size_t i) {
-    return adapter.on_boundary[i] != 0;
-  });
-
-  using Point_3 = typename boost::property_traits<TargetMap>::value_type;
-  const auto& problem = solved.second;
-  for(std::size_t i = 0; i < adapter.vertex_of.size(); ++i)
-    if(problem.is_free[i]) {
-      const auto& x = problem.map.target[i];
-      put(target, adapter.vertex_of[i], Point_3(x[0], x[1], x[2]));
-    }
-  return solved.first;
+  auto adapter = Distortion_optimization::internal::make_c3t3_adapter(c3t3, target, np);
+  return Distortion_optimization::internal::minimize_adapted(adapter, target, measure, np);
 }
 
 } // namespace CGAL

@@ -3,6 +3,8 @@
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/measures.h>
 
+#include "reference_svd.h"
+
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
@@ -96,7 +98,7 @@ void check_closed_forms(const Vector<n>& s)
     // Jacobians with these singular values, rotated at random on both sides (Definition 2.1).
     for(int k = 0; k < 5; ++k) {
       const Matrix<n> J = with_singular_values<n>(s);
-      EXPECT_NEAR(DO::internal::cell_distortion<n>(m, J), e, 1e-11 * std::abs(e)) << m.name() << " n=" << n;
+      EXPECT_NEAR(DO::internal::jacobian_distortion<n>(m, J), e, 1e-11 * std::abs(e)) << m.name() << " n=" << n;
     }
   });
 }
@@ -131,8 +133,8 @@ TEST(Measures, RigidMapsGiveTheMinimum)
     EXPECT_DOUBLE_EQ(DO::value_on_rigid_maps<2>(m), it->second) << m.name();
     const double m3 = m.name() == "mips" ? 3. : it->second;
     EXPECT_DOUBLE_EQ(DO::value_on_rigid_maps<3>(m), m3) << m.name();
-    EXPECT_NEAR(DO::internal::cell_distortion<3>(m, random_rotation<3>()), m3, 1e-12) << m.name();
-    EXPECT_NEAR(DO::internal::cell_distortion<2>(m, random_rotation<2>()), it->second, 1e-12) << m.name();
+    EXPECT_NEAR(DO::internal::jacobian_distortion<3>(m, random_rotation<3>()), m3, 1e-12) << m.name();
+    EXPECT_NEAR(DO::internal::jacobian_distortion<2>(m, random_rotation<2>()), it->second, 1e-12) << m.name();
   });
 }
 
@@ -181,8 +183,8 @@ void check_barrier()
     Matrix<n> reflection = Matrix<n>::Identity();
     reflection(0, 0) = -1;
     Matrix<n> dJ;
-    EXPECT_EQ(DO::internal::cell_distortion<n>(m, reflection), inf) << m.name();
-    EXPECT_EQ(DO::internal::cell_distortion<n>(m, reflection, dJ), inf) << m.name();
+    EXPECT_EQ(DO::internal::jacobian_distortion<n>(m, reflection), inf) << m.name();
+    EXPECT_EQ(DO::internal::jacobian_distortion<n>(m, reflection, dJ), inf) << m.name();
     EXPECT_TRUE(dJ.array().isNaN().all()) << m.name();
   });
 }
@@ -213,7 +215,7 @@ void check_gradient_against_finite_differences()
     for(int trial = 0; trial < 50; ++trial) {
       const Matrix<n> J = random_well_conditioned<n>();
       Matrix<n> dJ;
-      DO::internal::cell_distortion<n>(m, J, dJ);
+      DO::internal::jacobian_distortion<n>(m, J, dJ);
       Matrix<n> fd;
       const double h = 1e-6;
       for(int i = 0; i < n; ++i)
@@ -221,7 +223,7 @@ void check_gradient_against_finite_differences()
           Matrix<n> Jp = J, Jm = J;
           Jp(i, j) += h;
           Jm(i, j) -= h;
-          fd(i, j) = (DO::internal::cell_distortion<n>(m, Jp) - DO::internal::cell_distortion<n>(m, Jm)) / (2 * h);
+          fd(i, j) = (DO::internal::jacobian_distortion<n>(m, Jp) - DO::internal::jacobian_distortion<n>(m, Jm)) / (2 * h);
         }
       EXPECT_LE((dJ - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << "\nJ=\n" << J;
       // And the derivative in sigma itself.
@@ -277,11 +279,11 @@ TEST(Measures, GradientWithoutSingularVectorsMatchesTheExplicitOnes)
         Vector<3> l;
         fast_path += DO::internal::separated_gram_eigenvalues(J, A, l);
         DO::internal::Signed_svd<3> svd;
-        ASSERT_TRUE(DO::internal::signed_svd_jacobi(J, svd));
+        ASSERT_TRUE(reference::signed_svd_jacobi(J, svd));
         const auto check = [&](const auto& m) {
           if(!(m.template value<3>(svd.sigma) < std::numeric_limits<double>::infinity())) return;
           Matrix<3> dJ;
-          const double value = DO::internal::cell_distortion<3>(m, J, dJ);
+          const double value = DO::internal::jacobian_distortion<3>(m, J, dJ);
           const Matrix<3> expected = svd.U * m.template gradient<3>(svd.sigma).asDiagonal() * svd.V.transpose();
           EXPECT_NEAR(value, m.template value<3>(svd.sigma), 1e-13 * value) << m.name();
           EXPECT_LE((dJ - expected).norm(), 1e-10 * expected.norm()) << m.name() << " gap " << gap << "\nJ=\n" << J;
@@ -317,7 +319,7 @@ void check_batched_kernel()
     if(c == 5) std::swap(map.target[cell[1]], map.target[cell[2]]);               // inverted
     if(c == 8) map.target[cell[n]] = map.target[cell[1]];                          // flat
     if(c == 11) map.target[cell[0]][0] = std::numeric_limits<double>::quiet_NaN();
-    map.add_cell(cell, Dm);
+    map.add_cell(cell, Dm, 1);
   }
   const auto check = [&](const auto& m) {
     std::vector<double> values(cells);
@@ -329,7 +331,16 @@ void check_batched_kernel()
     for(int c = 0; c < cells; ++c) {
       std::array<Vector<n>, n + 1> g;
       Vector<n> s;
-      const double v = DO::internal::cell_distortion<n>(m, map, c, g, &s);
+      // Cell by cell: a measure with an invariant form through the lanes alone (a cell's value must
+      // not depend on its neighbours in a batch, to the last bit), the others from the Jacobian.
+      double v;
+      if constexpr(DO::internal::Has_invariant_form<std::decay_t<decltype(m)>, n>::value) {
+        DO::internal::cell_distortions<n>(m, map, 1, [c](std::size_t) { return std::size_t(c); }, &v, &g, &s);
+      } else {
+        Matrix<n> dJ;
+        v = DO::internal::jacobian_distortion<n>(m, map.jacobian(c), dJ, &s);
+        DO::internal::vertex_gradients_from_jacobian_gradient(map, c, dJ, g);
+      }
       // The same formulas; only the Jacobian's products may be ordered differently.
       for(double batched : {values[c], values_only[c]}) {
         if(std::isnan(v)) EXPECT_TRUE(std::isnan(batched)) << m.name() << " cell " << c;
@@ -372,7 +383,7 @@ void check_svd(const Matrix<n>& J, double tolerance)
   SCOPED_TRACE(trace.str());
   DO::internal::Signed_svd<n> a, b;
   ASSERT_TRUE(DO::internal::signed_svd(J, a));
-  ASSERT_TRUE(DO::internal::signed_svd_jacobi(J, b));
+  ASSERT_TRUE(reference::signed_svd_jacobi(J, b));
   const double scale = std::max(b.sigma[0], 1e-300);
   for(int i = 0; i < n; ++i)
     EXPECT_NEAR(a.sigma[i], b.sigma[i], tolerance * scale) << "i=" << i << "\nJ=\n" << J;
@@ -431,8 +442,8 @@ TEST(Svd, NonFiniteEntriesAreReportedNotPropagatedSilently)
     EXPECT_TRUE(s3.sigma.array().isNaN().all());
     for_each_measure([&](const auto& m) {
       Matrix<3> dJ;
-      EXPECT_TRUE(std::isnan(DO::internal::cell_distortion<2>(m, J2))) << m.name();
-      EXPECT_TRUE(std::isnan(DO::internal::cell_distortion<3>(m, J3, dJ))) << m.name();
+      EXPECT_TRUE(std::isnan(DO::internal::jacobian_distortion<2>(m, J2))) << m.name();
+      EXPECT_TRUE(std::isnan(DO::internal::jacobian_distortion<3>(m, J3, dJ))) << m.name();
       EXPECT_TRUE(dJ.array().isNaN().all()) << m.name();
     });
   }

@@ -4,10 +4,13 @@
 #include "test_meshes.h"
 
 #include <CGAL/Distortion_optimization/initial_maps.h>
-#include <CGAL/Distortion_optimization/internal/laplacian.h>
+#include <CGAL/Distortion_optimization/internal/laplacian_system.h>
+#include <CGAL/Distortion_optimization/internal/named_parameters.h>
+#include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <gtest/gtest.h>
@@ -179,6 +182,49 @@ TEST(MinimizeDistortion, ConstrainedVerticesAreUnchangedBitForBit)
   }
 }
 
+namespace {
+
+// A kernel whose orientation predicate counts its calls: proves that geom_traits is the one used.
+std::size_t orientation_calls = 0;
+struct Counting_kernel : K
+{
+  struct Orientation_2
+  {
+    CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
+    {
+      ++orientation_calls;
+      return K().orientation_2_object()(p, q, r);
+    }
+  };
+  Orientation_2 orientation_2_object() const { return {}; }
+};
+
+} // namespace
+
+TEST(MinimizeDistortion, GeomTraitsDecideOrientations)
+{
+  Noisy_map a(affine, 0.02), b(affine, 0.02), c(affine, 0.02);
+  const auto ra = CGAL::minimize_distortion(a.mesh, a.uv, DO::Conformal_dilatation());
+  // The traits' predicates are asked, and they agree with the default's, so the run is the same
+  // to the last bit, with an exact-constructions kernel too.
+  orientation_calls = 0;
+  const auto rb = CGAL::minimize_distortion(b.mesh, b.uv, DO::Conformal_dilatation(),
+                                            CGAL::parameters::geom_traits(Counting_kernel()));
+  EXPECT_GT(orientation_calls, b.mesh.number_of_faces());
+  const auto rc = CGAL::minimize_distortion(c.mesh, c.uv, DO::Conformal_dilatation(),
+                                            CGAL::parameters::geom_traits(CGAL::Exact_predicates_exact_constructions_kernel()));
+  EXPECT_EQ(ra.final_energy, rb.final_energy);
+  EXPECT_EQ(ra.final_energy, rc.final_energy);
+  EXPECT_EQ(ra.iterations, rc.iterations);
+  for(auto v : a.mesh.vertices()) {
+    EXPECT_EQ(a.uv[v], b.uv[v]);
+    EXPECT_EQ(a.uv[v], c.uv[v]);
+  }
+  orientation_calls = 0;
+  EXPECT_EQ(CGAL::compute_distortion(b.mesh, b.uv, DO::ARAP(), CGAL::parameters::geom_traits(Counting_kernel())).inverted_cells, 0u);
+  EXPECT_EQ(orientation_calls, 2 * b.mesh.number_of_faces());   // each source and each target face once
+}
+
 TEST(MinimizeDistortion, VisitorStopsTheRunAtAConsistentMap)
 {
   Noisy_map m(affine, 0.02);
@@ -203,13 +249,14 @@ TEST(MinimizeDistortion, HarmonicStartThatWouldInvertIsShortened)
     if(!m.mesh.is_border(v)) m.uv[v] = m.exact[v];
   ASSERT_EQ(count_flipped(m.mesh, m.uv), 0u);
   // The harmonic map of that border does invert triangles (checked with the package's own solve).
-  const DO::internal::Triangle_mesh_adapter<Mesh2, decltype(get(CGAL::vertex_point, m.mesh))> adapter(
-    m.mesh, get(CGAL::vertex_point, m.mesh), m.uv);
-  std::vector<unsigned char> is_free;
-  for(auto v : adapter.vertex_of) is_free.push_back(!m.mesh.is_border(v));
-  const auto harmonic = DO::internal::harmonic_targets(adapter.map, is_free);
+  auto adapter = DO::internal::make_triangle_mesh_adapter(m.mesh, m.uv, CGAL::parameters::default_values());
+  const auto problem = DO::internal::make_problem(adapter, CGAL::parameters::default_values());
+  const DO::internal::Workers workers;
+  DO::internal::Laplacian_system<2> system(problem, workers);
+  std::vector<DO::internal::Vector<2>> harmonic;
+  ASSERT_TRUE(system.harmonic_targets(problem.map.target, harmonic));
   std::size_t harmonic_flips = 0;
-  for(const auto& cell : adapter.map.cells) {
+  for(const auto& cell : problem.map.cells) {
     auto q = [&](int i) { return Point_2(harmonic[cell[i]][0], harmonic[cell[i]][1]); };
     if(CGAL::orientation(q(0), q(1), q(2)) != CGAL::LEFT_TURN) ++harmonic_flips;
   }

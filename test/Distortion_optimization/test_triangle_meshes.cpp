@@ -155,6 +155,23 @@ TEST(ComputeDistortion, ClockwiseSourceKeepsItsOrientation)
   EXPECT_EQ(CGAL::compute_distortion(m, mirror, DO::Conformal_dilatation()).inverted_cells, 1u);
 }
 
+TEST(ComputeDistortion, SourceOrientationIsDecidedExactly)
+{
+  // A nearly flat clockwise triangle whose floating-point determinant of source edges
+  // (q - p, r - p) comes out positive: only an exact predicate sees that the identity keeps its
+  // orientation.
+  const Point_2 p(0.1707908905576534, 0.18294937963584712), q(1.1707908905576534, 1.182949379635847),
+                r(3.1494963939535907, 3.161654883031784);
+  ASSERT_EQ(CGAL::orientation(p, q, r), CGAL::RIGHT_TURN);
+  ASSERT_GT((q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x()), 0.);
+  Mesh2 m;
+  m.add_face(m.add_vertex(p), m.add_vertex(q), m.add_vertex(r));
+  auto same = make_target(m, [](const Point_2& x) { return x; });
+  EXPECT_EQ(CGAL::compute_distortion(m, same, DO::ARAP()).inverted_cells, 0u);
+  auto mirror = make_target(m, [](const Point_2& x) { return Point_2(-x.x(), x.y()); });
+  EXPECT_EQ(CGAL::compute_distortion(m, mirror, DO::ARAP()).inverted_cells, 1u);
+}
+
 TEST(ComputeDistortion, BadInputIsRejectedWithAClearMessage)
 {
   auto expect_error = [](auto&& f, const std::string& fragment) {

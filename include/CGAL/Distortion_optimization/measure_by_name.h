@@ -12,23 +12,62 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
+
+#include <CGAL/assertions.h>
 
 namespace CGAL {
 namespace Distortion_optimization {
 
 /// \ingroup PkgDistortionOptimizationMeasures
-/// The names `with_measure()` understands, in the order of the paper's equations 8-16.
+/// The registry of built-in measures, in the order of the paper's equations 8-16: every run-time
+/// choice of a measure (`measure_names()`, `with_measure()`, `Product_of_measures`, the tool) is
+/// generated from this list and from each type's `name()`.
+using Built_in_measures = std::tuple<Conformal_dilatation, Condition_number, MIPS, Isometric_dilatation, ARAP,
+                                     Symmetric_dirichlet, Volume_distortion, Dirichlet>;
+
+namespace measures_internal {
+
+constexpr std::size_t number_of_built_in_measures = std::tuple_size<Built_in_measures>::value;
+
+// f(the built-in measure number k), k < number_of_built_in_measures.
+template <std::size_t I = 0, class F>
+decltype(auto) visit_built_in(std::size_t k, F&& f)
+{
+  using M = std::tuple_element_t<I, Built_in_measures>;
+  if constexpr(I + 1 == number_of_built_in_measures) {
+    CGAL_precondition(k == I);
+    return f(M());
+  } else {
+    if(k == I) return f(M());
+    return visit_built_in<I + 1>(k, std::forward<F>(f));
+  }
+}
+
+// The number of the built-in measure with that name, number_of_built_in_measures if none.
+inline std::size_t built_in_measure_number(const std::string& name);
+
+} // namespace measures_internal
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The names of the built-in measures, which `with_measure()` understands, in registry order.
 inline const std::vector<std::string>& measure_names()
 {
-  static const std::vector<std::string> names = {"conformal", "condition", "mips", "isometric", "arap",
-                                                 "symmetric_dirichlet", "volume", "dirichlet"};
+  static const std::vector<std::string> names =
+    std::apply([](const auto&... m) { return std::vector<std::string>{m.name()...}; }, Built_in_measures());
   return names;
 }
 
+inline std::size_t measures_internal::built_in_measure_number(const std::string& name)
+{
+  const auto& names = measure_names();
+  return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
 /// \ingroup PkgDistortionOptimizationMeasures
-/// The product of built-in measures chosen at run time, e.g. K * C from "conformal*isometric".
+/// The product of built-in measures chosen at run time by their names, e.g. K * C (the paper's Fig. 9).
 class Product_of_measures
 {
 public:
@@ -38,10 +77,9 @@ public:
   explicit Product_of_measures(const std::vector<std::string>& names)
   {
     for(const std::string& name : names) {
-      std::size_t k = 0;
-      while(k < measure_names().size() && measure_names()[k] != name) ++k;
-      if(k == measure_names().size()) throw Invalid_input("unknown measure '" + name + "'");
-      factors_.push_back(static_cast<int>(k));
+      const std::size_t k = measures_internal::built_in_measure_number(name);
+      if(k == measures_internal::number_of_built_in_measures) throw Invalid_input("unknown measure '" + name + "'");
+      factors_.push_back(k);
     }
     if(factors_.empty() || factors_.size() > max_factors)
       throw Invalid_input("a product of measures has 1 to " + std::to_string(max_factors) + " factors");
@@ -50,7 +88,7 @@ public:
   std::string name() const
   {
     std::string s;
-    for(int k : factors_) s += (s.empty() ? "" : "*") + measure_names()[k];
+    for(std::size_t k : factors_) s += (s.empty() ? "" : "*") + measure_names()[k];
     return s;
   }
   bool is_normalized() const { return all([](const auto& m) { return m.is_normalized(); }); }
@@ -61,7 +99,7 @@ public:
   {
     // The largest factor's weight, as Product does.
     double w = 0;
-    for(int k : factors_) visit(k, [&](const auto& m) { w = std::max(w, measures_internal::laplacian_weight<n>(m, s)); });
+    for(std::size_t k : factors_) visit(k, [&](const auto& m) { w = std::max(w, measures_internal::laplacian_weight<n>(m, s)); });
     return w;
   }
 
@@ -69,7 +107,7 @@ public:
   double value(const Singular_values<n>& s) const
   {
     double v = 1;
-    for(int k : factors_) visit(k, [&](const auto& m) { v *= m.template value<n>(s); });
+    for(std::size_t k : factors_) visit(k, [&](const auto& m) { v *= m.template value<n>(s); });
     return v;
   }
   // Product rule: sum_k (prod_{j != k} D_j) grad D_k.
@@ -79,7 +117,7 @@ public:
     std::array<double, max_factors> values;
     std::array<Singular_values<n>, max_factors> gradients;
     std::size_t count = 0;
-    for(int k : factors_)
+    for(std::size_t k : factors_)
       visit(k, [&](const auto& m) {
         values[count] = m.template value<n>(s);
         gradients[count++] = m.template gradient<n>(s);
@@ -96,28 +134,19 @@ public:
 
 private:
   template <class F>
-  static void visit(int k, F&& f)
+  static void visit(std::size_t k, F&& f)
   {
-    switch(k) {
-      case 0: f(Conformal_dilatation()); break;
-      case 1: f(Condition_number()); break;
-      case 2: f(MIPS()); break;
-      case 3: f(Isometric_dilatation()); break;
-      case 4: f(ARAP()); break;
-      case 5: f(Symmetric_dirichlet()); break;
-      case 6: f(Volume_distortion()); break;
-      default: f(Dirichlet()); break;
-    }
+    measures_internal::visit_built_in(k, std::forward<F>(f));
   }
   template <class Predicate>
   bool all(Predicate p) const
   {
     bool result = true;
-    for(int k : factors_) visit(k, [&](const auto& m) { result = result && p(m); });
+    for(std::size_t k : factors_) visit(k, [&](const auto& m) { result = result && p(m); });
     return result;
   }
 
-  std::vector<int> factors_;
+  std::vector<std::size_t> factors_;
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
@@ -136,17 +165,14 @@ decltype(auto) with_measure(const std::string& name, F&& f)
     factors.push_back(name.substr(begin));
     return f(Product_of_measures(factors));
   }
-  if(name == "conformal") return f(Conformal_dilatation());
-  if(name == "condition") return f(Condition_number());
-  if(name == "mips") return f(MIPS());
-  if(name == "isometric") return f(Isometric_dilatation());
-  if(name == "arap") return f(ARAP());
-  if(name == "symmetric_dirichlet") return f(Symmetric_dirichlet());
-  if(name == "volume") return f(Volume_distortion());
-  if(name == "dirichlet") return f(Dirichlet());
-  std::string known;
-  for(const auto& n : measure_names()) known += " " + n;
-  throw Invalid_input("unknown measure '" + name + "'; known:" + known + ", or products such as conformal*isometric");
+  const std::size_t k = measures_internal::built_in_measure_number(name);
+  if(k == measures_internal::number_of_built_in_measures) {
+    std::string known;
+    for(const auto& n : measure_names()) known += " " + n;
+    throw Invalid_input("unknown measure '" + name + "'; known:" + known + ", or products such as " + measure_names()[0] +
+                        "*" + measure_names()[3]);
+  }
+  return measures_internal::visit_built_in(k, std::forward<F>(f));
 }
 
 } // namespace Distortion_optimization

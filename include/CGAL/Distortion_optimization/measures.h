@@ -8,7 +8,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 #define CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 
-#include <CGAL/Distortion_optimization/internal/lanes.h>
+#include <CGAL/Distortion_optimization/number_types.h>
 
 #include <Eigen/Core>
 
@@ -66,8 +66,6 @@ struct Jacobian_invariants
 
 namespace measures_internal {
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
 // x^k for a small constant k (std::pow with a double exponent is many times slower).
 template <int k>
 double power(double x)
@@ -81,13 +79,13 @@ template <int n, class T>
 T mean_square_scale(const T& product)
 {
   if constexpr(n == 2) return product;
-  else return internal::lanewise_cbrt(product * product);
+  else return lanes::cbrt(product * product);
 }
 
 template <int n>
 Singular_values<n> nan_gradient()
 {
-  return Singular_values<n>::Constant(std::numeric_limits<double>::quiet_NaN());
+  return Singular_values<n>::Constant(not_a_number);
 }
 
 template <int n>
@@ -163,7 +161,7 @@ struct Conformal_dilatation : measures_internal::Regular_measure<measures_intern
   template <int n>
   double value(const Singular_values<n>& s) const
   {
-    if(!(s[n - 1] > 0)) return measures_internal::infinity;
+    if(!(s[n - 1] > 0)) return infinity;
     const double p = s.prod();
     return std::max(p / measures_internal::power<n>(s[n - 1]), measures_internal::power<n>(s[0]) / p);
   }
@@ -194,7 +192,7 @@ struct Condition_number : measures_internal::Regular_measure<measures_internal::
   template <int n>
   double value(const Singular_values<n>& s) const
   {
-    return s[n - 1] > 0 ? s[0] / s[n - 1] : measures_internal::infinity;
+    return s[n - 1] > 0 ? s[0] / s[n - 1] : infinity;
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
@@ -222,7 +220,7 @@ struct MIPS
   template <int n>
   double value(const Singular_values<n>& s) const
   {
-    if(!(s[n - 1] > 0)) return measures_internal::infinity;
+    if(!(s[n - 1] > 0)) return infinity;
     return s.squaredNorm() / measures_internal::mean_square_scale<n>(s.prod());
   }
   template <int n>
@@ -250,7 +248,7 @@ struct Isometric_dilatation : measures_internal::Regular_measure<measures_intern
   template <int n>
   double value(const Singular_values<n>& s) const
   {
-    return s[n - 1] > 0 ? std::max(s[0], 1. / s[n - 1]) : measures_internal::infinity;
+    return s[n - 1] > 0 ? std::max(s[0], 1. / s[n - 1]) : infinity;
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
@@ -290,7 +288,7 @@ struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_interna
   template <int n>
   double value(const Singular_values<n>& s) const
   {
-    if(!(s[n - 1] > 0)) return measures_internal::infinity;
+    if(!(s[n - 1] > 0)) return infinity;
     return (s.squaredNorm() + s.cwiseInverse().squaredNorm()) / (2 * n);
   }
   template <int n>
@@ -305,7 +303,7 @@ struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_interna
   {
     constexpr double half_n = 0.5 / n;
     const T inverse_det = 1. / I.det, inverse_det2 = inverse_det * inverse_det;
-    if(dI) *dI = {internal::broadcast<T>(half_n), half_n * inverse_det2, (-2 * half_n) * I.cofactor_norm2 * inverse_det2 * inverse_det};
+    if(dI) *dI = {lanes::broadcast<T>(half_n), half_n * inverse_det2, (-2 * half_n) * I.cofactor_norm2 * inverse_det2 * inverse_det};
     return half_n * (I.norm2 + I.cofactor_norm2 * inverse_det2);
   }
 };
@@ -320,7 +318,7 @@ struct Volume_distortion : measures_internal::Regular_measure<measures_internal:
   double value(const Singular_values<n>& s) const
   {
     const double d = s.prod();
-    return d > 0 ? std::max(d, 1. / d) : measures_internal::infinity;
+    return d > 0 ? std::max(d, 1. / d) : infinity;
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
@@ -333,7 +331,7 @@ struct Volume_distortion : measures_internal::Regular_measure<measures_internal:
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
     const T inverse = 1. / I.det;
-    if(dI) *dI = {T{}, T{}, I.det >= 1. ? internal::broadcast<T>(1.) : -inverse * inverse};
+    if(dI) *dI = {T{}, T{}, I.det >= 1. ? lanes::broadcast<T>(1.) : -inverse * inverse};
     return I.det >= 1. ? I.det : inverse;
   }
 };
@@ -358,7 +356,7 @@ struct Dirichlet : measures_internal::Unbounded_measure
   template <int n, class T>
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
-    if(dI) *dI = {internal::broadcast<T>(1. / n), T{}, T{}};
+    if(dI) *dI = {lanes::broadcast<T>(1. / n), T{}, T{}};
     return I.norm2 / n;
   }
 };

@@ -11,7 +11,8 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
-#include <CGAL/Distortion_optimization/internal/laplacian.h>
+#include <CGAL/Distortion_optimization/internal/laplacian_system.h>
+#include <CGAL/Distortion_optimization/internal/named_parameters.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -80,27 +81,28 @@ void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3&
 }
 
 /// \ingroup PkgDistortionOptimizationRef
-/// Replaces the targets of the free vertices by the harmonic map (minimizer of the Dirichlet
-/// energy sum_c vol(c) |J_c|^2, a sparse volume-weighted cotangent Laplacian solve) for the targets
-/// of the fixed ones. Fixed: `CGAL::parameters::vertex_is_constrained_map` (keyed by
-/// Vertex_handle), default the complex boundary. The result may invert cells where the boundary
-/// is not convex; `CGAL::compute_distortion`-style checks belong to the caller.
-template <class C3T3, class TargetMap, class NamedParameters = parameters::Default_named_parameters>
-void harmonic_map(const C3T3& c3t3, TargetMap target, const NamedParameters& np = parameters::default_values())
+/// Replaces the targets of the free vertices by the harmonic map: the minimizer of the Dirichlet
+/// energy sum_c w(c) |J_c|^2 for the targets of the fixed ones, with the cell weights w(c) of
+/// `CGAL::minimize_distortion()` (by default the volumes: the volume-weighted cotangent
+/// Laplacian), solved by incomplete-Cholesky conjugate gradients to a relative residual of 1e-10.
+/// The optimizer's harmonic start is the same solve. Named parameters: those of
+/// `CGAL::minimize_distortion()` that define the problem (`vertex_is_constrained_map`, keyed by
+/// `Vertex_handle`, default the complex boundary; `vertex_weight_map`; `cell_weighting`;
+/// `number_of_threads`). The result may invert cells where the boundary is not convex;
+/// `CGAL::compute_distortion()` tells.
+/// \throws Invalid_input if the harmonic map is not defined: some free vertex is connected to no
+/// fixed one (e.g. no vertex is fixed). `target` is then unchanged.
+template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void harmonic_map(const C3T3& c3t3, TargetMap target, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const internal::C3t3_adapter<C3T3> adapter(c3t3, target);
-  std::vector<unsigned char> is_free(adapter.vertex_of.size());
-  auto constrained = parameters::get_parameter(np, CGAL::internal_np::vertex_is_constrained);
-  for(std::size_t i = 0; i < is_free.size(); ++i) {
-    if constexpr(std::is_same<decltype(constrained), CGAL::internal_np::Param_not_found>::value)
-      is_free[i] = !adapter.on_boundary[i];
-    else
-      is_free[i] = !get(constrained, adapter.vertex_of[i]);
-  }
-  const auto x = internal::harmonic_targets(adapter.map, is_free);
-  using Point_3 = typename boost::property_traits<TargetMap>::value_type;
-  for(std::size_t i = 0; i < is_free.size(); ++i)
-    if(is_free[i]) put(target, adapter.vertex_of[i], Point_3(x[i][0], x[i][1], x[i][2]));
+  auto adapter = internal::make_c3t3_adapter(c3t3, target, np);
+  const internal::Optimization_problem<3> problem = internal::make_problem(adapter, np);
+  const internal::Workers workers(internal::read_options(np).threads);
+  internal::Laplacian_system<3> system(problem, workers);
+  std::vector<internal::Vector<3>> x;
+  if(!system.harmonic_targets(problem.map.target, x))
+    throw Invalid_input("the harmonic map is not defined: some free vertex is not connected to a fixed one");
+  adapter.write_targets(target, x, problem.is_free);
 }
 
 } // namespace Distortion_optimization

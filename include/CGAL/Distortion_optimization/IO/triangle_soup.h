@@ -10,7 +10,7 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
-#include <CGAL/Distortion_optimization/IO/internal/write_file_atomically.h>
+#include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 
 #include <array>
 #include <algorithm>

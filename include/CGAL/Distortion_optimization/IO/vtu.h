@@ -8,7 +8,7 @@
 #define CGAL_DISTORTION_OPTIMIZATION_IO_VTU_H
 
 #include <CGAL/Distortion_optimization/errors.h>
-#include <CGAL/Distortion_optimization/IO/internal/write_file_atomically.h>
+#include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 
 #include <array>
 #include <cmath>

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Translates the cells of a Mesh_complex_3_in_triangulation_3 (only those in the complex) and a
-// target map keyed by Vertex_handle into the flat arrays of Simplicial_map<3>, and back.
+// target map keyed by Vertex_handle into the flat arrays of Simplicial_map<3>, and writes the
+// targets back.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_C3T3_ADAPTER_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_C3T3_ADAPTER_H
@@ -11,13 +12,14 @@
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
 
-#include <cmath>
+#include <array>
+#include <cstdint>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,37 +32,58 @@ struct Is_c3t3 : std::false_type {};
 template <class T>
 struct Is_c3t3<T, std::void_t<typename T::Triangulation, typename T::Cells_in_complex_iterator>> : std::true_type {};
 
-template <class C3T3>
+template <class C3T3, class GeomTraits>
 class C3t3_adapter
 {
 public:
+  static constexpr int dimension = 3;
   using Triangulation = typename C3T3::Triangulation;
   using Vertex_handle = typename Triangulation::Vertex_handle;
   using Cell_handle = typename Triangulation::Cell_handle;
+  using Geom_traits = GeomTraits;
 
   Simplicial_map<3> map;
   std::vector<Vertex_handle> vertex_of;       // vertex index -> handle (vertices of complex cells)
   std::vector<Cell_handle> cell_of;           // cell index -> handle
   std::vector<unsigned char> on_boundary;     // vertex on a facet shared with a cell not in the complex
+  GeomTraits traits;
 
   template <class TargetMap>
-  C3t3_adapter(const C3T3& c3t3, const TargetMap& target)
+  C3t3_adapter(const C3T3& c3t3, const TargetMap& target, const GeomTraits& gt) : traits(gt)
   {
     const Triangulation& tr = c3t3.triangulation();
     auto point = tr.geom_traits().construct_point_3_object();
+    std::unordered_map<Vertex_handle, std::uint32_t> index;
+    const auto index_of = [&](Vertex_handle v) {
+      auto inserted = index.emplace(v, static_cast<std::uint32_t>(vertex_of.size()));
+      if(inserted.second) {
+        const auto& y = get(target, v);
+        Vector<3> x(CGAL::to_double(y.x()), CGAL::to_double(y.y()), CGAL::to_double(y.z()));
+        if(!x.allFinite())
+          throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite target coordinate");
+        map.target.push_back(x);
+        vertex_of.push_back(v);
+        on_boundary.push_back(0);
+      }
+      return inserted.first->second;
+    };
+    using P = typename GeomTraits::Point_3;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       typename Simplicial_map<3>::Cell cell;
-      for(int i = 0; i < 4; ++i) cell[i] = index(c->vertex(i), point, target);
-      const auto &p = point(tr.point(c, 0)), &q = point(tr.point(c, 1)), &r = point(tr.point(c, 2)),
-                 &s = point(tr.point(c, 3));
-      if(CGAL::orientation(p, q, r, s) != CGAL::POSITIVE)
+      std::array<Vector<3>, 4> x;
+      std::array<P, 4> p;
+      for(int i = 0; i < 4; ++i) {
+        cell[i] = index_of(c->vertex(i));
+        const auto& q = point(tr.point(c, i));
+        x[i] = Vector<3>(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+        p[i] = P(x[i][0], x[i][1], x[i][2]);
+      }
+      if(traits.orientation_3_object()(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE)
         throw Invalid_input("source cell " + std::to_string(cell_of.size()) + " of the complex is not positively oriented "
                             "(degenerate)");
       Matrix<3> Dm;
-      Dm << q.x() - p.x(), r.x() - p.x(), s.x() - p.x(),
-            q.y() - p.y(), r.y() - p.y(), s.y() - p.y(),
-            q.z() - p.z(), r.z() - p.z(), s.z() - p.z();
-      map.add_cell(cell, Dm);
+      for(int k = 0; k < 3; ++k) Dm.col(k) = x[k + 1] - x[0];
+      map.add_cell(cell, Dm, +1);
       cell_of.push_back(Cell_handle(c));
       for(int i = 0; i < 4; ++i)
         if(!c3t3.is_in_complex(c->neighbor(i)))
@@ -71,27 +94,25 @@ public:
       throw Invalid_input("the complex has no cell");
   }
 
-  std::size_t index(Vertex_handle v) const { return index_.at(v); }
-
-private:
-  template <class ConstructPoint, class TargetMap>
-  std::uint32_t index(Vertex_handle v, const ConstructPoint&, const TargetMap& target)
+  // Writes the targets x of the free vertices into the target map.
+  template <class TargetMap>
+  void write_targets(TargetMap target, const std::vector<Vector<3>>& x, const std::vector<unsigned char>& is_free) const
   {
-    auto inserted = index_.emplace(v, static_cast<std::uint32_t>(vertex_of.size()));
-    if(inserted.second) {
-      const auto& y = get(target, v);
-      Vector<3> x(CGAL::to_double(y.x()), CGAL::to_double(y.y()), CGAL::to_double(y.z()));
-      if(!x.allFinite())
-        throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite target coordinate");
-      map.target.push_back(x);
-      vertex_of.push_back(v);
-      on_boundary.push_back(0);
-    }
-    return inserted.first->second;
+    using Point_3 = typename boost::property_traits<TargetMap>::value_type;
+    for(std::size_t i = 0; i < vertex_of.size(); ++i)
+      if(is_free[i]) put(target, vertex_of[i], Point_3(x[i][0], x[i][1], x[i][2]));
   }
-
-  std::unordered_map<Vertex_handle, std::uint32_t> index_;
 };
+
+// The adapter with the predicates of `geom_traits` (default: the kernel of the triangulation's points).
+template <class C3T3, class TargetMap, class NamedParameters>
+auto make_c3t3_adapter(const C3T3& c3t3, const TargetMap& target, const NamedParameters& np)
+{
+  using Default = typename CGAL::Kernel_traits<typename C3T3::Triangulation::Geom_traits::Point_3>::Kernel;
+  using GT = typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters, Default>::type;
+  const GT gt = CGAL::parameters::choose_parameter<GT>(CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits));
+  return C3t3_adapter<C3T3, GT>(c3t3, target, gt);
+}
 
 } // namespace internal
 } // namespace Distortion_optimization

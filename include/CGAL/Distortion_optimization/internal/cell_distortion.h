@@ -3,13 +3,14 @@
 //
 // The per-cell kernel: D(J) and its exact derivative dD/dJ = U diag(dD/dsigma) V^T.
 // Measures that can be written with invariants of J (norms of J and of its cofactor matrix,
-// determinant) skip the SVD and evaluate several cells at once, one per SIMD lane (lanes.h).
+// determinant) skip the SVD and evaluate several cells at once, one per SIMD lane (number_types.h).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
 
 #include <CGAL/Distortion_optimization/measures.h>
-#include <CGAL/Distortion_optimization/internal/lanes.h>
+#include <CGAL/Distortion_optimization/number_types.h>
+#include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
@@ -32,9 +33,6 @@ struct Has_invariant_form<Measure, n,
   std::void_t<decltype(std::declval<const Measure&>().template value_of_invariants<n, double>(
     std::declval<const Jacobian_invariants<double>&>(), static_cast<Jacobian_invariants<double>*>(nullptr)))>> : std::true_type {};
 
-constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
 // D(J) and, if dJ is given, dD/dJ through the measure's invariant form, for one cell (T = double)
 // or one cell per lane: NaN where J has a non-finite entry, +inf where a normalized measure sees
 // det J <= 0 (dJ is then meaningless; callers replace it by NaN). The chain rule needs
@@ -44,15 +42,7 @@ template <int n, class T, class Measure>
 T distortion_from_invariants(const Measure& measure, bool normalized, const T (&J)[n][n], T (*dJ)[n])
 {
   T C[n][n];
-  if constexpr(n == 2) {
-    C[0][0] = J[1][1], C[0][1] = -J[1][0], C[1][0] = -J[0][1], C[1][1] = J[0][0];
-  } else {
-    for(int r = 0; r < 3; ++r)
-      for(int c = 0; c < 3; ++c) {
-        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-        C[r][c] = J[r1][c1] * J[r2][c2] - J[r1][c2] * J[r2][c1];
-      }
-  }
+  cofactor_matrix<n>([&](int r, int c) { return J[r][c]; }, C);
   Jacobian_invariants<T> I{T{}, T{}, T{}}, dI;
   for(int r = 0; r < n; ++r)
     for(int c = 0; c < n; ++c) {
@@ -61,14 +51,14 @@ T distortion_from_invariants(const Measure& measure, bool normalized, const T (&
     }
   for(int c = 0; c < n; ++c) I.det += J[0][c] * C[0][c];
   T value = measure.template value_of_invariants<n>(I, dJ ? &dI : nullptr);
-  if(normalized) value = I.det > 0. ? value : broadcast<T>(infinity);
-  value = I.norm2 * 0. == 0. ? value : broadcast<T>(not_a_number);   // |J|^2 is finite iff J is (or beyond 1e154)
+  if(normalized) value = I.det > 0. ? value : lanes::broadcast<T>(infinity);
+  value = I.norm2 * 0. == 0. ? value : lanes::broadcast<T>(not_a_number);   // |J|^2 is finite iff J is (or beyond 1e154)
   if(dJ) {
     const T a = 2. * (n == 2 ? dI.norm2 + dI.cofactor_norm2 : dI.norm2);
     for(int r = 0; r < n; ++r)
       for(int c = 0; c < n; ++c) dJ[r][c] = a * J[r][c] + dI.det * C[r][c];
     if constexpr(n == 3) {
-      if(any_nonzero(dI.cofactor_norm2)) {
+      if(lanes::any_nonzero(dI.cofactor_norm2)) {
         T A[3][3];   // J^T J
         for(int r = 0; r < 3; ++r)
           for(int c = r; c < 3; ++c) A[r][c] = A[c][r] = J[0][r] * J[0][c] + J[1][r] * J[1][c] + J[2][r] * J[2][c];
@@ -112,9 +102,10 @@ double distortion_from_gram(const Measure& measure, const Matrix<3>& J, const Ma
   return value;
 }
 
-/// D(J). NaN when J has a non-finite entry, so that callers can report it (never silently +inf).
+/// D(J) of one Jacobian. NaN when J has a non-finite entry, so that callers can report it (never
+/// silently +inf).
 template <int n, class Measure>
-double cell_distortion(const Measure& measure, const Matrix<n>& J)
+double jacobian_distortion(const Measure& measure, const Matrix<n>& J)
 {
   if constexpr(Has_invariant_form<Measure, n>::value)
     return distortion_from_invariants<n>(measure, J, nullptr);
@@ -127,7 +118,7 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J)
 /// D(J) and dD/dJ. Where D is +inf (an inverted cell under a normalized measure) or J is not
 /// finite, dJ is NaN. If `sigma` is given it receives the signed singular values of J.
 template <int n, class Measure>
-double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ, Vector<n>* sigma = nullptr)
+double jacobian_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ, Vector<n>* sigma = nullptr)
 {
   double value = not_a_number;
   if(J.allFinite()) {
@@ -167,16 +158,13 @@ double cell_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ
   return value;
 }
 
-// dD/dx_i of cell c from dD/dJ: with G = dD/dJ Dm^-T, column i-1 of G for vertex i and minus
-// their sum for vertex 0.
+// dD/dx_i of cell c from dD/dJ (cell_derivatives.h).
 template <int n>
 void vertex_gradients_from_jacobian_gradient(const Simplicial_map<n>& map, std::size_t c, const Matrix<n>& dJ,
                                              std::array<Vector<n>, n + 1>& vertex_gradients)
 {
   const Matrix<n> G = dJ * map.inverse_rest[c].transpose();
-  vertex_gradients[0] = -G.rowwise().sum();
-  for(int i = 0; i < n; ++i)
-    vertex_gradients[i + 1] = G.col(i);
+  for(int i = 0; i <= n; ++i) vertex_gradients[i] = vertex_derivative(G, i);
 }
 
 // cell_distortions for measures with an invariant form: each lane gathers one cell's target edges
@@ -185,20 +173,20 @@ template <int n, class Measure, class CellAt>
 void distortions_from_invariants(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
                                  double* values, std::array<Vector<n>, n + 1>* vertex_gradients, Vector<n>* sigma)
 {
-  using T = Cell_lanes;
-  constexpr int lanes = number_of_lanes<T>;
+  using T = lanes::Cell_lanes;
+  constexpr int width = lanes::count<T>;
   const bool normalized = measure.is_normalized();
-  for(std::size_t first = 0; first < count; first += lanes) {
-    const int m = static_cast<int>(std::min<std::size_t>(lanes, count - first));
+  for(std::size_t first = 0; first < count; first += width) {
+    const int m = static_cast<int>(std::min<std::size_t>(width, count - first));
     T X[n + 1][n], B[n][n], Ds[n][n], J[n][n], dJ[n][n];
-    for(int l = 0; l < lanes; ++l) {   // lanes past the count repeat the first cell
+    for(int l = 0; l < width; ++l) {   // lanes past the count repeat the first cell
       const std::size_t c = cell_at(first + (l < m ? l : 0));
       for(int j = 0; j <= n; ++j) {
         const Vector<n>& x = map.target[map.cells[c][j]];
-        for(int i = 0; i < n; ++i) set_lane(X[j][i], l, x[i]);
+        for(int i = 0; i < n; ++i) lanes::set(X[j][i], l, x[i]);
       }
       for(int j = 0; j < n; ++j)
-        for(int i = 0; i < n; ++i) set_lane(B[i][j], l, map.inverse_rest[c](i, j));
+        for(int i = 0; i < n; ++i) lanes::set(B[i][j], l, map.inverse_rest[c](i, j));
     }
     for(int j = 0; j < n; ++j)
       for(int i = 0; i < n; ++i) Ds[i][j] = X[j + 1][i] - X[0][i];
@@ -208,48 +196,31 @@ void distortions_from_invariants(const Measure& measure, const Simplicial_map<n>
         for(int k = 1; k < n; ++k) J[i][j] += Ds[i][k] * B[k][j];
       }
     const T value = distortion_from_invariants<n>(measure, normalized, J, vertex_gradients ? dJ : nullptr);
-    for(int l = 0; l < m; ++l) values[first + l] = lane(value, l);
+    for(int l = 0; l < m; ++l) values[first + l] = lanes::get(value, l);
     if(vertex_gradients) {
-      T G[n][n + 1];   // dD/dJ Dm^-T in columns 1..n (vertices 1..n), minus their sum in column 0
+      T G[n][n + 1];   // vertex_derivative's lane form: dD/dJ Dm^-T in columns 1..n, minus their sum in column 0
       const auto finite = value < infinity;
       for(int i = 0; i < n; ++i) {
         G[i][0] = T{};
         for(int j = 0; j < n; ++j) {
           G[i][j + 1] = dJ[i][0] * B[j][0];
           for(int k = 1; k < n; ++k) G[i][j + 1] += dJ[i][k] * B[j][k];
-          G[i][j + 1] = finite ? G[i][j + 1] : broadcast<T>(not_a_number);
+          G[i][j + 1] = finite ? G[i][j + 1] : lanes::broadcast<T>(not_a_number);
           G[i][0] -= G[i][j + 1];
         }
       }
       for(int l = 0; l < m; ++l)
         for(int j = 0; j <= n; ++j)
-          for(int i = 0; i < n; ++i) vertex_gradients[first + l][j][i] = lane(G[i][j], l);
+          for(int i = 0; i < n; ++i) vertex_gradients[first + l][j][i] = lanes::get(G[i][j], l);
     }
     if(sigma)
       for(int l = 0; l < m; ++l) {
         Matrix<n> Jl;
         for(int i = 0; i < n; ++i)
-          for(int j = 0; j < n; ++j) Jl(i, j) = lane(J[i][j], l);
+          for(int j = 0; j < n; ++j) Jl(i, j) = lanes::get(J[i][j], l);
         if(Jl.allFinite()) sigma[first + l] = signed_singular_values(Jl);
       }
   }
-}
-
-/// D(J_c) of cell c of a map and its derivative in the cell's n+1 target positions (with an
-/// invariant form, the lanes' arithmetic: the same value as among other cells, to the last bit).
-template <int n, class Measure>
-double cell_distortion(const Measure& measure, const Simplicial_map<n>& map, std::size_t c,
-                       std::array<Vector<n>, n + 1>& vertex_gradients, Vector<n>* sigma = nullptr)
-{
-  double value;
-  if constexpr(Has_invariant_form<Measure, n>::value) {
-    distortions_from_invariants<n>(measure, map, 1, [c](std::size_t) { return c; }, &value, &vertex_gradients, sigma);
-  } else {
-    Matrix<n> dJ;
-    value = cell_distortion<n>(measure, map.jacobian(c), dJ, sigma);
-    vertex_gradients_from_jacobian_gradient(map, c, dJ, vertex_gradients);
-  }
-  return value;
 }
 
 // cell_distortions for measures that need singular values: in 3D, eight cells' Gram eigenvalues
@@ -259,17 +230,17 @@ void distortions_from_singular_values(const Measure& measure, const Simplicial_m
                                       double* values, std::array<Vector<n>, n + 1>* vertex_gradients, Vector<n>* sigma)
 {
   constexpr bool batched = n == 3;
-  constexpr std::size_t lanes = batched ? 8 : 1;
-  using Lanes = Eigen::Array<double, lanes, 1>;
-  std::array<Matrix<n>, lanes> J, A;
+  constexpr std::size_t width = batched ? 8 : 1;
+  using Lanes = Eigen::Array<double, width, 1>;
+  std::array<Matrix<n>, width> J, A;
   Matrix<n> dJ;
-  for(std::size_t first = 0; first < count; first += lanes) {
-    const std::size_t m = std::min(lanes, count - first);
+  for(std::size_t first = 0; first < count; first += width) {
+    const std::size_t m = std::min(width, count - first);
     for(std::size_t i = 0; i < m; ++i) J[i] = map.jacobian(cell_at(first + i));
     std::array<Lanes, 3> l;
     if constexpr(batched) {
       Lanes a00, a11, a22, a01, a02, a12;
-      for(std::size_t i = 0; i < lanes; ++i) {
+      for(std::size_t i = 0; i < width; ++i) {
         A[i].noalias() = J[i < m ? i : 0].transpose() * J[i < m ? i : 0];
         a00[i] = A[i](0, 0), a11[i] = A[i](1, 1), a22[i] = A[i](2, 2), a01[i] = A[i](0, 1), a02[i] = A[i](0, 2), a12[i] = A[i](1, 2);
       }
@@ -284,7 +255,7 @@ void distortions_from_singular_values(const Measure& measure, const Simplicial_m
         if((done = are_separated(A[i].trace(), li)))
           values[k] = distortion_from_gram(measure, J[i], A[i], li, vertex_gradients ? &dJ : nullptr, s);
       }
-      if(!done) values[k] = vertex_gradients || s ? cell_distortion<n>(measure, J[i], dJ, s) : cell_distortion<n>(measure, J[i]);
+      if(!done) values[k] = vertex_gradients || s ? jacobian_distortion<n>(measure, J[i], dJ, s) : jacobian_distortion<n>(measure, J[i]);
       if(vertex_gradients) vertex_gradients_from_jacobian_gradient(map, cell_at(k), dJ, vertex_gradients[k]);
     }
   }

@@ -2,14 +2,15 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Algorithm 2 (GreedyGradDescent): every free vertex is optimized once per sweep, the one with the
-// largest omega(v) dist_w(f, v) first. Keys live in an indexed max-heap and follow the changes of
-// the cells a move touches; the alternative order sorts the keys once per sweep.
+// largest omega(v) dist_w(f, v) first. In the paper's order (greedy_sweep) the keys live in an
+// indexed max-heap and follow the changes of the cells a move touches; the default order
+// (sorted_sweep) sorts the keys once per sweep, for the same energies at less cost.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GREEDY_SWEEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GREEDY_SWEEP_H
 
 #include <CGAL/Distortion_optimization/parameters.h>
-#include <CGAL/Distortion_optimization/internal/local_step.h>
+#include <CGAL/Distortion_optimization/internal/optimization_problem.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -91,46 +92,48 @@ private:
 
 // Optimizes each of the given vertices once, the most distorted (at the start) first. Ties keep
 // the given order, so that the result does not depend on the sort's implementation.
-template <int n, class Measure>
-void sorted_sweep(Local_step<n, Measure>& step, const std::vector<std::uint32_t>& vertices)
+template <class LocalStep>
+void sorted_sweep(LocalStep& step, const std::vector<std::uint32_t>& vertices)
 {
   std::vector<std::pair<double, std::uint32_t>> keyed;
   keyed.reserve(vertices.size());
-  for(std::uint32_t v : vertices) keyed.emplace_back(step.vertex_distortion(v), v);
+  for(std::uint32_t v : vertices) keyed.emplace_back(step.state().vertex_distortion(v), v);
   std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   for(const auto& kv : keyed) step.optimize(kv.second);
 }
 
-template <int n, class Measure>
-void greedy_sweep(Local_step<n, Measure>& step, Vertex_order order)
+// The paper's order: always the most distorted remaining vertex.
+template <class LocalStep>
+void greedy_sweep(LocalStep& step, const std::vector<std::uint32_t>& vertices)
 {
-  const Optimization_problem<n>& p = step.problem();
-  const std::size_t nv = p.number_of_vertices();
-
-  if(order == Vertex_order::SORTED_PER_SWEEP) {
-    sorted_sweep(step, free_vertices(p));
-    return;
-  }
-
-  Indexed_max_heap heap(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    if(p.is_free[v]) heap.push(v, step.vertex_distortion(v));
+  const auto& state = step.state();
+  const auto& p = state.problem();
+  Indexed_max_heap heap(p.number_of_vertices());
+  for(std::uint32_t v : vertices) heap.push(v, state.vertex_distortion(v));
   std::vector<double> before;
   while(!heap.empty()) {
     const std::size_t v = heap.pop();
     const std::uint32_t begin = p.ring_begin[v], end = p.ring_begin[v + 1];
     before.resize(end - begin);
-    for(std::uint32_t k = begin; k < end; ++k) before[k - begin] = step.cell_value[p.ring[k].cell];
+    for(std::uint32_t k = begin; k < end; ++k) before[k - begin] = state.value(p.ring[k].cell);
     if(!step.optimize(v)) continue;
     // The neighbours' keys follow the change of each cell they share with v.
     for(std::uint32_t k = begin; k < end; ++k) {
       const std::uint32_t c = p.ring[k].cell;
-      const double change = p.incidence_weight[c] * (step.cell_value[c] - before[k - begin]);
+      const double change = p.incidence_weight[c] * (state.value(c) - before[k - begin]);
       if(change == 0) continue;
       for(auto u : p.map.cells[c])
         if(u != v && heap.contains(u)) heap.add_to_key(u, p.omega[u] * change);
     }
   }
+}
+
+// One sequential sweep over the given vertices in the chosen order.
+template <class LocalStep>
+void sequential_sweep(LocalStep& step, const std::vector<std::uint32_t>& vertices, Vertex_order order)
+{
+  if(order == Vertex_order::GREEDY) greedy_sweep(step, vertices);
+  else sorted_sweep(step, vertices);
 }
 
 } // namespace internal

@@ -44,8 +44,8 @@ std::vector<std::vector<std::uint32_t>> independent_sets(const Optimization_prob
   return sets;
 }
 
-template <int n, class Measure>
-void independent_set_sweep(Local_step<n, Measure>& step, const std::vector<std::vector<std::uint32_t>>& sets,
+template <class LocalStep>
+void independent_set_sweep(LocalStep& step, const std::vector<std::vector<std::uint32_t>>& sets,
                            const Workers& workers)
 {
   for(const auto& set : sets)

@@ -6,88 +6,39 @@
 //
 // Each incident cell's signed volume is affine in y, so along a direction d the largest step
 // before some cell degenerates is exact: t_max = min over shrinking cells of vol / (-dvol/dt).
-// Trial steps stay below 0.9 t_max and backtrack (Armijo); an accepted position is checked with
-// CGAL's exact orientation predicate, so no cell that was positive is ever flipped or flattened.
+// Trial steps stay below half of t_max and backtrack (Armijo); the state accepts a position only
+// if no valid cell of the ring flipped or flattened (exact orientation predicate).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
 
 #include <CGAL/Distortion_optimization/parameters.h>
-#include <CGAL/Distortion_optimization/internal/boundary_guard.h>
+#include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
-#include <CGAL/Distortion_optimization/internal/cofactor.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
-#include <CGAL/Distortion_optimization/internal/parallel.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-template <int n, class Measure>
+template <class State>
 class Local_step
 {
-  Optimization_problem<n>& p_;
-  const Measure& measure_;
-  Local_solver solver_;
+  static constexpr int n = State::dimension;
+  using Vec = Vector<n>;
 
 public:
-  using Vec = Vector<n>;
-  static constexpr double armijo = 1e-4;
   static constexpr double safety = 0.5;   // fraction of the exact largest step tried first (0.9 backtracks more)
   static constexpr int max_backtracks = 40;
-  static constexpr double rounding = 64 * std::numeric_limits<double>::epsilon();
 
-  // The start's cell values and orientations are computed on the given workers.
-  Local_step(Optimization_problem<n>& problem, const Measure& measure, Local_solver solver, const Workers& workers)
-    : p_(problem), measure_(measure), solver_(solver),
-      cell_value(problem.map.number_of_cells()), cell_ok(problem.map.number_of_cells()),
-      last_step_(problem.number_of_vertices(), 0.)
-  {
-    workers.for_each_block(cell_value.size(), 1024, [&](std::size_t first, std::size_t size) {
-      cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return first + i; }, &cell_value[first]);
-      for(std::size_t c = first; c < first + size; ++c) cell_ok[c] = !is_inverted(p_.map, c);
-    });
-  }
+  Local_step(State& state, Local_solver solver)
+    : state_(state), p_(state.problem()), solver_(solver), last_step_(p_.number_of_vertices(), 0.) {}
 
-  // D(J_c) of the current map, and whether cell c has the orientation of its source (exact).
-  std::vector<double> cell_value;
-  std::vector<unsigned char> cell_ok;
-
-  const Optimization_problem<n>& problem() const { return p_; }
-
-  // Global injectivity with free boundary vertices (none by default). The guard must have been
-  // built for the current map; vertices on its boundary must then be optimized one at a time.
-  void set_boundary_guard(Boundary_guard<n>* guard) { guard_ = guard; }
-  Boundary_guard<n>* boundary_guard() const { return guard_; }
-
-  // E = sum_c w(c) D(J_c) (eq. 25), summed with Neumaier's compensation so that its rounding error
-  // stays near one ulp whatever the number of cells (sweep-to-sweep decreases can be that small).
-  double energy() const
-  {
-    double sum = 0, compensation = 0;
-    for(std::size_t c = 0; c < cell_value.size(); ++c) {
-      const double term = p_.cell_weight[c] * cell_value[c], t = sum + term;
-      compensation += std::abs(sum) >= std::abs(term) ? (sum - t) + term : (term - t) + sum;
-      sum = t;
-    }
-    return sum + compensation;
-  }
-
-  // omega(v) dist_w(f, v) (eq. 22): the greedy order's key.
-  double vertex_distortion(std::size_t v) const
-  {
-    double d = 0;
-    for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k) {
-      const std::uint32_t c = p_.ring[k].cell;
-      d += p_.incidence_weight[c] * cell_value[c];
-    }
-    return p_.omega[v] * d;
-  }
+  const State& state() const { return state_; }
 
   // Solves (26) approximately for v; returns true if v moved.
   bool optimize(std::size_t v)
@@ -135,49 +86,6 @@ public:
     return moved;
   }
 
-  // The trial half of every line search, local or global: the targets of cells cell_at(0),
-  // ..., cell_at(count - 1) have just moved, the energy was e0. Accepts, and commits their
-  // values, if the energy becomes at most e0 + bound (Armijo) by a decrease above the rounding
-  // error of e0 (so that accepted moves really decrease the energy) and no positive cell flipped
-  // or flattened (exact predicate). A local trial (workers == nullptr) may run concurrently with
-  // others on disjoint rings; a global one spreads its cells over the workers.
-  // A last check, e.g. the boundary guard's, runs before the commit.
-  template <class CellAt, class Check = bool (*)()>
-  bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound, const Workers* workers = nullptr,
-                    const Check& check = [] { return true; })
-  {
-    static thread_local std::vector<double> ring_trial;
-    std::vector<double>& trial = workers ? global_trial_ : ring_trial;
-    trial.resize(count);
-    if(workers)
-      workers->for_each_block(count, 512, [&](std::size_t first, std::size_t size) {
-        cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return cell_at(first + i); }, &trial[first]);
-      });
-    else
-      cell_distortions<n>(measure_, p_.map, count, cell_at, trial.data());
-    const auto value = [&](std::size_t i) {
-      const std::uint32_t c = cell_at(i);
-      return p_.cell_weight[c] * (trial[i] - cell_value[c]);
-    };
-    const auto flipped = [&](std::size_t i) { return cell_ok[cell_at(i)] && is_inverted(p_.map, cell_at(i)); };
-    const auto commit = [&](std::size_t i) {
-      const std::uint32_t c = cell_at(i);
-      cell_value[c] = trial[i];
-      if(!cell_ok[c]) cell_ok[c] = !is_inverted(p_.map, c);
-    };
-    double e = e0;
-    if(workers) e += workers->sum(count, value);
-    else for(std::size_t i = 0; i < count; ++i) e += value(i);
-    if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
-    bool any_flipped = false;
-    if(workers) any_flipped = workers->reduce(count, false, flipped, [](bool a, bool b) { return a || b; });
-    else for(std::size_t i = 0; i < count && !any_flipped; ++i) any_flipped = flipped(i);
-    if(any_flipped || !check()) return false;
-    if(workers) workers->for_each(count, 1024, commit);
-    else for(std::size_t i = 0; i < count; ++i) commit(i);
-    return true;
-  }
-
 private:
   // The ring's energy sum_c w(c) D(J_c) at the current position of v and its gradient in v.
   double ring_gradient(std::size_t v, Vec& g) const
@@ -187,7 +95,7 @@ private:
     const std::uint32_t begin = p_.ring_begin[v], count = p_.ring_begin[v + 1] - begin;
     value.resize(count);
     gradient.resize(count);
-    cell_distortions<n>(measure_, p_.map, count, [&](std::size_t i) { return p_.ring[begin + i].cell; }, value.data(), gradient.data());
+    cell_distortions<n>(state_.measure(), p_.map, count, [&](std::size_t i) { return p_.ring[begin + i].cell; }, value.data(), gradient.data());
     g.setZero();
     double e = 0;
     for(std::uint32_t i = 0; i < count; ++i) {
@@ -199,17 +107,16 @@ private:
     return e;
   }
 
-  // Exact largest t such that no positive cell of the ring degenerates at y + t d.
+  // Exact largest t such that no valid cell of the ring degenerates at y + t d.
   double max_step(std::size_t v, const Vec& d) const
   {
-    double t_max = std::numeric_limits<double>::infinity();
+    double t_max = infinity;
     for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k) {
       const Incidence& in = p_.ring[k];
-      if(!cell_ok[in.cell]) continue;
+      if(!state_.is_valid(in.cell)) continue;
       const Cofactor_and_determinant<n> cd(p_.map.target_edges(in.cell));
-      const Vec dvolume = in.local == 0 ? Vec(-cd.cofactor.rowwise().sum()) : Vec(cd.cofactor.col(in.local - 1));
       const double sign = p_.map.rest_sign[in.cell];
-      const double rate = sign * dvolume.dot(d), volume = sign * cd.det;
+      const double rate = sign * vertex_derivative(cd.cofactor, in.local).dot(d), volume = sign * cd.det;
       if(rate < 0) t_max = std::min(t_max, std::max(volume, 0.) / -rate);
     }
     return t_max;
@@ -217,7 +124,7 @@ private:
 
   double nearest_neighbour_distance(std::size_t v) const
   {
-    double h2 = std::numeric_limits<double>::infinity();
+    double h2 = infinity;
     const Vec& y = p_.map.target[v];
     for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k)
       for(auto u : p_.map.cells[p_.ring[k].cell])
@@ -229,18 +136,19 @@ private:
   // positive cell flips (exact predicate). On success v stays at the new position, t is the step.
   bool line_search(std::size_t v, double e0, const Vec& d, double slope, double& t)
   {
-    Vec& x = p_.map.target[v];
+    Vec& x = state_.targets()[v];
     const Vec x0 = x;
     const std::uint32_t begin = p_.ring_begin[v], end = p_.ring_begin[v + 1];
     const auto ring_cell = [&](std::size_t i) { return p_.ring[begin + i].cell; };
     // A free boundary vertex under the guard also keeps the boundary free of self-intersections.
-    const bool guarded = guard_ && guard_->is_on_boundary(v);
-    const auto boundary_ok = [&] { return !guarded || guard_->accepts_move(v, p_.map.target); };
+    auto* guard = state_.boundary_guard();
+    const bool guarded = guard && guard->is_on_boundary(v);
+    const auto boundary_ok = [&] { return !guarded || guard->accepts_move(v, state_.targets()); };
     for(int k = 0; k < max_backtracks && t > 0; ++k, t *= 0.5) {
       x = x0 + t * d;
       if(x == x0) break;   // the step no longer changes the position
-      if(accept_trial(end - begin, ring_cell, e0, armijo * t * slope, nullptr, boundary_ok)) {
-        if(guarded) guard_->commit_move(v, p_.map.target);
+      if(state_.accept_trial(end - begin, ring_cell, e0, State::armijo * t * slope, false, boundary_ok)) {
+        if(guarded) guard->commit_move(v, state_.targets());
         return true;
       }
     }
@@ -248,9 +156,10 @@ private:
     return false;
   }
 
-  Boundary_guard<n>* guard_ = nullptr;
+  State& state_;
+  const Optimization_problem<n>& p_;
+  Local_solver solver_;
   std::vector<double> last_step_;   // last accepted step parameter of each vertex
-  std::vector<double> global_trial_;   // cell values at a trial position of a global step
 };
 
 } // namespace internal

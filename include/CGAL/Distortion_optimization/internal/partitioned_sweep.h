@@ -40,7 +40,7 @@ Vertex_partition partition_vertices(const Optimization_problem<n>& p, std::size_
 {
   const auto& map = p.map;
   const std::size_t nc = map.number_of_cells();
-  Vector<n> lo = Vector<n>::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  Vector<n> lo = Vector<n>::Constant(infinity), hi = -lo;
   for(const auto& x : map.target) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
   int axis;
   (hi - lo).maxCoeff(&axis);
@@ -68,8 +68,8 @@ Vertex_partition partition_vertices(const Optimization_problem<n>& p, std::size_
   return result;
 }
 
-template <int n, class Measure>
-void partitioned_sweep(Local_step<n, Measure>& step, const Vertex_partition& partition, const Workers& workers)
+template <class LocalStep>
+void partitioned_sweep(LocalStep& step, const Vertex_partition& partition, const Workers& workers)
 {
   sorted_sweep(step, partition.interface);
   workers.for_each(partition.parts.size(), 1, [&](std::size_t i) { sorted_sweep(step, partition.parts[i]); });

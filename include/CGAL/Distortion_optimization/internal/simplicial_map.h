@@ -8,10 +8,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 
-#include <CGAL/Distortion_optimization/errors.h>
-#include <CGAL/Distortion_optimization/internal/svd.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 
 #include <Eigen/LU>
 
@@ -19,7 +16,6 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -41,14 +37,14 @@ struct Simplicial_map
   std::size_t number_of_cells() const { return cells.size(); }
   std::size_t number_of_vertices() const { return target.size(); }
 
-  // Dm must be invertible (adapters check source cells with exact predicates first).
-  void add_cell(const Cell& cell, const Matrix<n>& Dm)
+  // Dm must be invertible and `sign` the orientation of the source cell (+1 or -1), decided by the
+  // adapter with an exact predicate: a floating-point determinant may get a nearly flat cell wrong.
+  void add_cell(const Cell& cell, const Matrix<n>& Dm, int sign)
   {
-    const double det = Dm.determinant();
     cells.push_back(cell);
     inverse_rest.push_back(Dm.inverse());
-    rest_volume.push_back(std::abs(det) / (n == 2 ? 2. : 6.));
-    rest_sign.push_back(det > 0 ? 1 : -1);
+    rest_volume.push_back(std::abs(Dm.determinant()) / (n == 2 ? 2. : 6.));
+    rest_sign.push_back(static_cast<signed char>(sign > 0 ? 1 : -1));
   }
 
   Matrix<n> target_edges(std::size_t c) const
@@ -62,13 +58,12 @@ struct Simplicial_map
 
   Matrix<n> jacobian(std::size_t c) const { return target_edges(c) * inverse_rest[c]; }
 
-  // The gradients of the hat functions of cell c's vertices (columns): with B = Dm^-1, row i-1 of
-  // B for vertex i >= 1, and minus their sum for vertex 0.
+  // The gradients of the hat functions of cell c's vertices (columns): vertex_derivative of Dm^-T.
   Eigen::Matrix<double, n, n + 1> hat_gradients(std::size_t c) const
   {
+    const Matrix<n> M = inverse_rest[c].transpose();
     Eigen::Matrix<double, n, n + 1> G;
-    G.template rightCols<n>() = inverse_rest[c].transpose();
-    G.col(0) = -G.template rightCols<n>().rowwise().sum();
+    for(int i = 0; i <= n; ++i) G.col(i) = vertex_derivative(M, i);
     return G;
   }
 };
@@ -84,42 +79,27 @@ inline Matrix<2> triangle_frame_edges(const Vector<3>& e1, const Vector<3>& e2)
   return Dm;
 }
 
-// omega(v) for the vertices of a map (handles in index order) from a vertex property map; throws
-// unless every weight is finite and positive.
-template <class Handles, class VertexWeightMap>
-std::vector<double> vertex_weights(const Handles& vertex_of, const VertexWeightMap& weights)
+// Orientation of the target image of cell c by the geometric traits' predicate (exact with CGAL's
+// kernels, which is what the guarantees rest on): +1, 0 or -1.
+template <int n, class GeomTraits>
+int target_orientation(const Simplicial_map<n>& map, std::size_t c, const GeomTraits& traits)
 {
-  std::vector<double> w;
-  w.reserve(vertex_of.size());
-  for(const auto& v : vertex_of) {
-    w.push_back(static_cast<double>(get(weights, v)));
-    if(!(w.back() > 0) || !std::isfinite(w.back()))
-      throw Invalid_input("vertex " + std::to_string(w.size() - 1) + " has a weight that is not finite and positive");
-  }
-  return w;
-}
-
-// Orientation of the target image of cell c with CGAL's exact predicate: +1, 0 or -1.
-template <int n>
-int exact_target_orientation(const Simplicial_map<n>& map, std::size_t c)
-{
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const auto& cell = map.cells[c];
   const auto& x = map.target;
   if constexpr(n == 2) {
-    auto p = [&](int i) { return K::Point_2(x[cell[i]][0], x[cell[i]][1]); };
-    return static_cast<int>(CGAL::orientation(p(0), p(1), p(2)));
+    auto p = [&](int i) { return typename GeomTraits::Point_2(x[cell[i]][0], x[cell[i]][1]); };
+    return static_cast<int>(traits.orientation_2_object()(p(0), p(1), p(2)));
   } else {
-    auto p = [&](int i) { return K::Point_3(x[cell[i]][0], x[cell[i]][1], x[cell[i]][2]); };
-    return static_cast<int>(CGAL::orientation(p(0), p(1), p(2), p(3)));
+    auto p = [&](int i) { return typename GeomTraits::Point_3(x[cell[i]][0], x[cell[i]][1], x[cell[i]][2]); };
+    return static_cast<int>(traits.orientation_3_object()(p(0), p(1), p(2), p(3)));
   }
 }
 
-// A target cell is inverted (or degenerate) unless its exact orientation is the source's.
-template <int n>
-bool is_inverted(const Simplicial_map<n>& map, std::size_t c)
+// A target cell is inverted (or degenerate) unless its orientation is the source's.
+template <int n, class GeomTraits>
+bool is_inverted(const Simplicial_map<n>& map, std::size_t c, const GeomTraits& traits)
 {
-  return exact_target_orientation(map, c) != map.rest_sign[c];
+  return target_orientation(map, c, traits) != map.rest_sign[c];
 }
 
 } // namespace internal

@@ -21,9 +21,10 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// vertex_weights: omega(v), empty for omega = 1. per_cell (optional) receives D(J_c).
-template <int n, class Measure>
-Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& measure,
+// vertex_weights: omega(v), empty for omega = 1. per_cell (optional) receives D(J_c). The traits'
+// orientation predicates count the inverted cells.
+template <int n, class Measure, class GeomTraits>
+Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& measure, const GeomTraits& traits,
                                const std::vector<double>& vertex_weights,
                                std::vector<double>* per_cell = nullptr)
 {
@@ -51,7 +52,7 @@ Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& meas
     sum_volume += omega * map.rest_volume[c];
     s.min = std::min(s.min, d);
     s.max = std::max(s.max, d);
-    if(is_inverted(map, c)) ++s.inverted_cells;
+    if(is_inverted(map, c, traits)) ++s.inverted_cells;
   }
   s.energy_average_volume = s.energy_volume / (n + 1);
   s.mean_uniform = s.energy_uniform / sum_uniform;

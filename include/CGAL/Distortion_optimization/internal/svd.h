@@ -10,21 +10,19 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SVD_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SVD_H
 
+#include <CGAL/Distortion_optimization/number_types.h>
+#include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
-
-template <int n> using Matrix = Eigen::Matrix<double, n, n>;
-template <int n> using Vector = Eigen::Matrix<double, n, 1>;
 
 template <int n>
 struct Signed_svd
@@ -36,7 +34,7 @@ struct Signed_svd
 template <int n>
 Vector<n> not_a_number_vector()
 {
-  return Vector<n>::Constant(std::numeric_limits<double>::quiet_NaN());
+  return Vector<n>::Constant(not_a_number);
 }
 
 // ---------------------------------------------------------------- 2x2, closed form
@@ -251,26 +249,6 @@ inline Matrix<3> gram_spectral_product(const Matrix<3>& J, const Matrix<3>& A, c
   Matrix<3> F = d012 * (M0 * M1) + d01 * M0;
   F.diagonal().array() += h[0];
   return J * F;
-}
-
-// ---------------------------------------------------------------- reference: Eigen's JacobiSVD
-// Kept for the accuracy tests and the benchmark that chose the closed forms above.
-
-template <int n>
-bool signed_svd_jacobi(const Matrix<n>& J, Signed_svd<n>& out)
-{
-  if(!J.allFinite()) {
-    out.sigma = not_a_number_vector<n>();
-    return false;
-  }
-  Eigen::JacobiSVD<Matrix<n>> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  out.U = svd.matrixU();
-  out.V = svd.matrixV();
-  out.sigma = svd.singularValues();
-  // Move reflections into the last singular value so that U and V are rotations.
-  if(out.U.determinant() < 0) { out.U.col(n - 1) *= -1; out.sigma[n - 1] *= -1; }
-  if(out.V.determinant() < 0) { out.V.col(n - 1) *= -1; out.sigma[n - 1] *= -1; }
-  return true;
 }
 
 } // namespace internal

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Translates a triangle mesh (any FaceListGraph) with a source vertex point map (Point_2 or
-// Point_3) and a target map (Point_2) into the flat arrays of Simplicial_map<2>, and back.
-// Everything a solver must not have to check is checked here, with CGAL's exact predicates.
+// Point_3) and a target map (Point_2) into the flat arrays of Simplicial_map<2>, and writes the
+// targets back. Everything a solver must not have to check is checked here, with the geometric
+// traits' (exact) predicates.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TRIANGLE_MESH_ADAPTER_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TRIANGLE_MESH_ADAPTER_H
@@ -13,7 +14,6 @@
 
 #include <CGAL/Dimension.h>
 #include <CGAL/Dynamic_property_map.h>
-#include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Named_function_parameters.h>
@@ -28,39 +28,46 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-template <class TriangleMesh, class VertexPointMap>
+template <class TriangleMesh, class VertexPointMap, class GeomTraits>
 class Triangle_mesh_adapter
 {
   using GT = boost::graph_traits<TriangleMesh>;
 
 public:
+  static constexpr int dimension = 2;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using face_descriptor = typename GT::face_descriptor;
   using Source_point = typename boost::property_traits<VertexPointMap>::value_type;
   static constexpr int source_dimension = CGAL::Ambient_dimension<Source_point>::value;
-  using Index_map = typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t>>::const_type;
+  using Geom_traits = GeomTraits;
 
   Simplicial_map<2> map;
   std::vector<vertex_descriptor> vertex_of;  // vertex index -> vertex
   std::vector<face_descriptor> cell_of;      // cell index -> face
+  std::vector<unsigned char> on_boundary;    // border vertices: the default constraints
+  GeomTraits traits;
 
   template <class TargetMap>
-  Triangle_mesh_adapter(const TriangleMesh& tm, VertexPointMap vpm, const TargetMap& target)
-    : index_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm))
+  Triangle_mesh_adapter(const TriangleMesh& tm, VertexPointMap vpm, const TargetMap& target, const GeomTraits& gt)
+    : traits(gt)
   {
     static_assert(source_dimension == 2 || source_dimension == 3, "source points must be Point_2 or Point_3");
     if(num_faces(tm) == 0)
       throw Invalid_input("the mesh has no face");
+    auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+    std::vector<Vector<source_dimension>> source;
     for(vertex_descriptor v : vertices(tm)) {
-      put(index_, v, vertex_of.size());
+      put(index, v, vertex_of.size());
       const auto& q = get(target, v);
       Vector<2> x(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
       if(!x.allFinite())
         throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite target coordinate");
-      if(!is_finite(get(vpm, v)))
+      source.push_back(to_vector(get(vpm, v)));
+      if(!source.back().allFinite())
         throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite source coordinate");
       map.target.push_back(x);
       vertex_of.push_back(v);
+      on_boundary.push_back(CGAL::is_border(v, tm) ? 1 : 0);
     }
     for(face_descriptor f : faces(tm)) {
       const std::size_t c = cell_of.size();
@@ -69,29 +76,26 @@ public:
       typename Simplicial_map<2>::Cell cell;
       int i = 0;
       for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-        cell[i++] = static_cast<typename Simplicial_map<2>::Index>(get(index_, v));
-      const Source_point &p = get(vpm, vertex_of[cell[0]]), &q = get(vpm, vertex_of[cell[1]]),
-                         &r = get(vpm, vertex_of[cell[2]]);
-      if(CGAL::collinear(p, q, r))
+        cell[i++] = static_cast<typename Simplicial_map<2>::Index>(get(index, v));
+      const auto &p = source[cell[0]], &q = source[cell[1]], &r = source[cell[2]];
+      const int sign = source_orientation(p, q, r);
+      if(sign == 0)
         throw Invalid_input("source face " + std::to_string(c) + " is degenerate (zero area)");
-      map.add_cell(cell, rest_edges(p, q, r));
+      map.add_cell(cell, rest_edges(p, q, r), sign);
       cell_of.push_back(f);
     }
   }
 
-  std::size_t index(vertex_descriptor v) const { return get(index_, v); }
-
-private:
-  Index_map index_;
-
-  template <class P>
-  static bool is_finite(const P& p)
+  // Writes the targets x of the free vertices into the target map.
+  template <class TargetMap>
+  void write_targets(TargetMap target, const std::vector<Vector<2>>& x, const std::vector<unsigned char>& is_free) const
   {
-    for(int i = 0; i < source_dimension; ++i)
-      if(!std::isfinite(CGAL::to_double(p[i]))) return false;
-    return true;
+    using Point_2 = typename boost::property_traits<TargetMap>::value_type;
+    for(std::size_t i = 0; i < vertex_of.size(); ++i)
+      if(is_free[i]) put(target, vertex_of[i], Point_2(x[i][0], x[i][1]));
   }
 
+private:
   static Vector<source_dimension> to_vector(const Source_point& p)
   {
     Vector<source_dimension> x;
@@ -99,27 +103,46 @@ private:
     return x;
   }
 
-  static Matrix<2> rest_edges(const Source_point& p, const Source_point& q, const Source_point& r)
+  // The orientation of a source triangle, decided by the traits on the coordinates the map uses:
+  // a planar source's own (+1 or -1), always +1 for a surface triangle in its own frame; 0 for a
+  // degenerate one.
+  int source_orientation(const Vector<source_dimension>& p, const Vector<source_dimension>& q,
+                         const Vector<source_dimension>& r) const
   {
-    const auto x0 = to_vector(p);
+    if constexpr(source_dimension == 2) {
+      using P = typename GeomTraits::Point_2;
+      return static_cast<int>(traits.orientation_2_object()(P(p[0], p[1]), P(q[0], q[1]), P(r[0], r[1])));
+    } else {
+      using P = typename GeomTraits::Point_3;
+      return traits.collinear_3_object()(P(p[0], p[1], p[2]), P(q[0], q[1], q[2]), P(r[0], r[1], r[2])) ? 0 : 1;
+    }
+  }
+
+  static Matrix<2> rest_edges(const Vector<source_dimension>& p, const Vector<source_dimension>& q,
+                              const Vector<source_dimension>& r)
+  {
     if constexpr(source_dimension == 2) {
       Matrix<2> Dm;
-      Dm.col(0) = to_vector(q) - x0;
-      Dm.col(1) = to_vector(r) - x0;
+      Dm.col(0) = q - p;
+      Dm.col(1) = r - p;
       return Dm;
     } else {
-      return triangle_frame_edges(to_vector(q) - x0, to_vector(r) - x0);
+      return triangle_frame_edges(q - p, r - p);
     }
   }
 };
 
-// The adapter for the source positions named by `vertex_point_map` (default: the mesh's points).
+// The adapter for the source positions named by `vertex_point_map` (default: the mesh's points)
+// and the predicates of `geom_traits` (default: the kernel of those points).
 template <class TriangleMesh, class TargetMap, class NamedParameters>
 auto make_triangle_mesh_adapter(const TriangleMesh& tm, const TargetMap& target, const NamedParameters& np)
 {
-  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  return Triangle_mesh_adapter<TriangleMesh, decltype(vpm)>(tm, vpm, target);
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  using GT = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  return Triangle_mesh_adapter<TriangleMesh, decltype(vpm), GT>(tm, vpm, target, gt);
 }
 
 } // namespace internal

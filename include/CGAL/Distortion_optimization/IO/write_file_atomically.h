@@ -1,12 +1,11 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The atomic writer every IO header uses. The function is public (IO::write_file_atomically);
-// it lives here only so that the format headers can share it. Include it through any of
-// IO/triangle_soup.h, IO/medit.h or IO/vtu.h.
+// The atomic writer every IO header uses, and which programs may use for their own files (the
+// command-line tool writes its JSON report with it).
 
-#ifndef CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_WRITE_FILE_ATOMICALLY_H
-#define CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_WRITE_FILE_ATOMICALLY_H
+#ifndef CGAL_DISTORTION_OPTIMIZATION_IO_WRITE_FILE_ATOMICALLY_H
+#define CGAL_DISTORTION_OPTIMIZATION_IO_WRITE_FILE_ATOMICALLY_H
 
 #include <CGAL/Distortion_optimization/errors.h>
 
@@ -49,4 +48,4 @@ inline void write_file_atomically(const std::string& path, const std::function<v
 } // namespace Distortion_optimization
 } // namespace CGAL
 
-#endif // CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_WRITE_FILE_ATOMICALLY_H
+#endif // CGAL_DISTORTION_OPTIMIZATION_IO_WRITE_FILE_ATOMICALLY_H

@@ -1,0 +1,279 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The one Laplacian of the package: P = sum_c w(c) f(c) G_c^T G_c restricted to the free vertices,
+// with G_c the gradients of cell c's hat functions (cell_derivatives.h) and w(c) the problem's
+// cell weights. With f = 1 and volume weights it is the volume-weighted cotangent Laplacian of the
+// source (the Hessian of the Dirichlet energy at rest), for triangles in their own frames and for
+// tetrahedra alike; the global step reweights it per cell. This module builds its sparsity
+// pattern once, refills its values, and solves with it by conjugate gradients, on all threads and
+// with results that do not depend on their number. Users: the harmonic map (harmonic_targets
+// below: the public harmonic_map() and the optimizer's harmonic start) and the global step.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H
+
+#include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+#include <CGAL/Distortion_optimization/internal/parallel.h>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+template <int n>
+class Laplacian_system
+{
+  using Vec = Vector<n>;
+
+public:
+  // The harmonic map's solve: relative residual and iteration cap of its conjugate gradients.
+  static constexpr double harmonic_tolerance = 1e-10;
+  static constexpr int harmonic_iterations = 2000;
+
+  Laplacian_system(const Optimization_problem<n>& problem, const Workers& workers) : p_(problem), workers_(workers)
+  {
+    const std::size_t nv = p_.number_of_vertices();
+    column_.assign(nv, -1);
+    for(std::size_t v = 0; v < nv; ++v)
+      if(p_.is_free[v]) column_[v] = size_++;
+    for(std::size_t c = 0; c < p_.map.number_of_cells(); ++c) {
+      bool moves = false;
+      for(auto v : p_.map.cells[c]) moves = moves || p_.is_free[v];
+      if(moves) moving_cells_.push_back(static_cast<std::uint32_t>(c));
+    }
+    build_pattern();
+  }
+
+  // The number of unknowns (free vertices), and the column of vertex v (-1 if v is fixed).
+  int size() const { return size_; }
+  int column(std::size_t v) const { return column_[v]; }
+  // The cells with a free vertex, in increasing order: the only ones a move of the free vertices changes.
+  const std::vector<std::uint32_t>& moving_cells() const { return moving_cells_; }
+
+  // Refills P with the cell stiffnesses w(c) f(c) G^T G and, if asked, accumulates the weighted
+  // vertex gradients w(c) dE_c/dx of the free vertices into the rows of g, or the fixed vertices'
+  // contribution -P_free,fixed x_fixed into the rows of rhs. `cell_terms(cells, count, factor,
+  // gradient)` gives, for the moving cells cells[0..count), f(c) and (when g is asked) the
+  // unweighted vertex gradients; nullptr means f = 1. Block by block of cells, the cells' parts are
+  // computed in parallel, then gathered in parallel by column: column j of P and rows j of g and
+  // rhs take their contributions in cell order, so that every sum has the sequential order
+  // whatever the number of threads.
+  template <class CellTerms>
+  void refill(const CellTerms& cell_terms, Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
+  {
+    constexpr bool unit_factors = std::is_same<CellTerms, std::nullptr_t>::value;
+    std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
+    std::vector<Eigen::Matrix<double, n + 1, n + 1>> stiffness(std::min(block, moving_cells_.size()));
+    std::vector<std::array<Vec, n + 1>> gradient(g ? stiffness.size() : 0);
+    std::vector<double> factor(stiffness.size(), 1.);
+    for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
+      const std::size_t count = std::min(block, moving_cells_.size() - first);
+      workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
+        if constexpr(!unit_factors)
+          cell_terms(&moving_cells_[first + begin], size, &factor[begin], g ? &gradient[begin] : nullptr);
+        for(std::size_t i = begin; i < begin + size; ++i) {
+          const std::uint32_t c = moving_cells_[first + i];
+          const double w = p_.cell_weight[c];
+          const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
+          stiffness[i] = (w * factor[i]) * (G.transpose() * G);
+          if(g)
+            for(Vec& x : gradient[i]) x = w * x;
+        }
+      });
+      const Block_incidences& incidences = blocks_[first / block];
+      workers_.for_each(incidences.columns.size(), 64, [&](std::size_t t) {
+        const std::uint32_t j = incidences.columns[t];
+        for(std::uint32_t k = incidences.begin[t]; k < incidences.begin[t + 1]; ++k) {
+          const std::uint32_t local = incidences.entries[k] / (n + 1), a = incidences.entries[k] % (n + 1);
+          if(g && gradient[local][a].allFinite())
+            g->row(j) += gradient[local][a].transpose();
+          const int* slot = &slots_[(first + local) * (n + 1) * (n + 1)];
+          for(int b = 0; b <= n; ++b) {
+            const int s = slot[b * (n + 1) + a];   // entry (b, a): row of cell vertex b in column j
+            if(s >= 0) P_.valuePtr()[s] += stiffness[local](b, a);
+          }
+          if(rhs)
+            for(int b = 0; b <= n; ++b)
+              if(slot[a * (n + 1) + b] < 0)   // vertex b is fixed
+                rhs->row(j) -= stiffness[local](a, b) * p_.map.target[p_.map.cells[moving_cells_[first + local]][b]].transpose();
+        }
+      });
+    }
+  }
+
+  const Eigen::SparseMatrix<double>& matrix() const { return P_; }
+
+  // Solves P X = B by preconditioned conjugate gradients (the recurrences of Eigen's
+  // conjugate_gradient) from the guess in X, to the given relative residual or number of
+  // iterations. The n columns are independent solves, one per thread; the products with P run by
+  // rows (P is symmetric) on all threads, so that a thread done with its column helps the others.
+  template <class Preconditioner>
+  void solve(const Preconditioner& preconditioner, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+             int iterations, double tolerance) const
+  {
+    const std::size_t size = static_cast<std::size_t>(size_);
+    const auto product = [&](const Eigen::VectorXd& u, Eigen::VectorXd& pu) {
+      workers_.for_each(size, 2048, [&](std::size_t i) {
+        double sum = 0;
+        for(int k = P_.outerIndexPtr()[i]; k < P_.outerIndexPtr()[i + 1]; ++k) sum += P_.valuePtr()[k] * u[P_.innerIndexPtr()[k]];
+        pu[i] = sum;
+      });
+    };
+    workers_.for_each(n, 1, [&](std::size_t d) {
+      const Eigen::VectorXd b = B.col(d);
+      Eigen::VectorXd x = X.col(d), r(size), z(size), p(size), q(size);
+      const double b2 = b.squaredNorm();
+      if(b2 == 0) {
+        X.col(d).setZero();
+        return;
+      }
+      const double threshold = std::max(tolerance * tolerance * b2, (std::numeric_limits<double>::min)());
+      product(x, q);
+      r = b - q;
+      if(r.squaredNorm() < threshold) return;
+      p = preconditioner.solve(r);
+      double rz = r.dot(p);
+      for(int it = 0; it < iterations; ++it) {
+        product(p, q);
+        const double alpha = rz / p.dot(q);
+        x += alpha * p;
+        r -= alpha * q;
+        if(r.squaredNorm() < threshold) break;
+        z = preconditioner.solve(r);
+        const double rz_old = rz;
+        rz = r.dot(z);
+        p = z + (rz / rz_old) * p;
+      }
+      X.col(d) = x;
+    });
+  }
+
+  // The harmonic map: the targets x of the free vertices that minimize sum_c w(c) |J_c|^2 with
+  // the fixed vertices where `targets` has them, by conjugate gradients with an incomplete Cholesky
+  // preconditioner (a direct factorization of a 3D Laplacian fills in badly: tens of seconds at
+  // 400K tetrahedra) from the free vertices' current targets, to harmonic_tolerance. Returns false,
+  // with x unspecified, where the harmonic map is not defined: some set of free vertices is
+  // connected to no fixed one (in particular when no vertex is fixed: the minimizers are then the
+  // constant maps). Refills P with the unit factors.
+  bool harmonic_targets(const std::vector<Vec>& targets, std::vector<Vec>& x)
+  {
+    x = targets;
+    if(size_ == 0) return true;
+    if(size_ == static_cast<int>(p_.number_of_vertices())) return false;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(size_, n), X(size_, n);
+    refill(nullptr, nullptr, &rhs);
+    Eigen::IncompleteCholesky<double> preconditioner;
+    preconditioner.compute(P_);
+    if(preconditioner.info() != Eigen::Success) return false;
+    for(std::size_t v = 0; v < x.size(); ++v)
+      if(column_[v] >= 0) X.row(column_[v]) = targets[v].transpose();
+    solve(preconditioner, rhs, X, harmonic_iterations, harmonic_tolerance);
+    if(!X.allFinite()) return false;   // a free part with no fixed vertex: P is singular there
+    for(std::size_t v = 0; v < x.size(); ++v)
+      if(column_[v] >= 0) x[v] = X.row(column_[v]).transpose();
+    return true;
+  }
+
+private:
+  // The sparsity pattern of the free-free block, and for each cell and pair of its free vertices
+  // the slot of their entry, so that refills only rewrite values.
+  void build_pattern()
+  {
+    // Column by column from the rings, straight into compressed storage (no triplet list: it
+    // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
+    // their rows in parallel, each column into its own segment.
+    const std::vector<std::uint32_t> column_vertex = free_vertices(p_);   // column_'s inverse
+    const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
+      static thread_local std::vector<int> neighbours;
+      neighbours.clear();
+      const std::uint32_t a = column_vertex[column];
+      for(std::uint32_t k = p_.ring_begin[a]; k < p_.ring_begin[a + 1]; ++k)
+        for(auto b : p_.map.cells[p_.ring[k].cell])
+          if(column_[b] >= 0) neighbours.push_back(column_[b]);
+      std::sort(neighbours.begin(), neighbours.end());
+      neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+      return neighbours;
+    };
+    std::vector<int> offset(size_ + 1, 0);
+    workers_.for_each(size_, 1024, [&](std::size_t j) { offset[j + 1] = static_cast<int>(free_neighbours(j).size()); });
+    for(int j = 0; j < size_; ++j) offset[j + 1] += offset[j];
+    P_.resize(size_, size_);
+    P_.resizeNonZeros(offset[size_]);
+    std::copy(offset.begin(), offset.end(), P_.outerIndexPtr());
+    std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
+    workers_.for_each(size_, 1024, [&](std::size_t j) {
+      const std::vector<int>& rows = free_neighbours(j);
+      std::copy(rows.begin(), rows.end(), P_.innerIndexPtr() + offset[j]);
+    });
+    // Where each entry of each cell's (n+1) x (n+1) stiffness goes in P (-1: a fixed vertex).
+    constexpr std::size_t entries = (n + 1) * (n + 1);
+    slots_.assign(moving_cells_.size() * entries, -1);
+    workers_.for_each(moving_cells_.size(), 1024, [&](std::size_t i) {
+      const auto& cell = p_.map.cells[moving_cells_[i]];
+      int* slot = &slots_[i * entries];
+      for(auto a : cell)
+        for(auto b : cell) {
+          if(column_[a] >= 0 && column_[b] >= 0) {
+            const int* begin = P_.innerIndexPtr() + offset[column_[b]];
+            const int* end = P_.innerIndexPtr() + offset[column_[b] + 1];
+            *slot = static_cast<int>(std::lower_bound(begin, end, column_[a]) - P_.innerIndexPtr());
+          }
+          ++slot;
+        }
+    });
+    // Each block's incidences of free vertices, by column of P and, within a column, in cell order:
+    // what refill gathers.
+    blocks_.assign((moving_cells_.size() + block - 1) / block, {});
+    workers_.for_each(blocks_.size(), 1, [&](std::size_t b) {
+      std::vector<std::uint64_t> keys;   // column in the high half, the incidence in the low one
+      for(std::size_t i = b * block; i < std::min(moving_cells_.size(), (b + 1) * block); ++i)
+        for(int a = 0; a <= n; ++a) {
+          const int column = column_[p_.map.cells[moving_cells_[i]][a]];
+          if(column >= 0) keys.push_back(std::uint64_t(column) << 32 | ((i - b * block) * (n + 1) + a));
+        }
+      std::sort(keys.begin(), keys.end());
+      Block_incidences& incidences = blocks_[b];
+      for(std::size_t k = 0; k < keys.size(); ++k) {
+        if(k == 0 || keys[k] >> 32 != keys[k - 1] >> 32) {
+          incidences.columns.push_back(static_cast<std::uint32_t>(keys[k] >> 32));
+          incidences.begin.push_back(static_cast<std::uint32_t>(k));
+        }
+        incidences.entries.push_back(static_cast<std::uint32_t>(keys[k]));
+      }
+      incidences.begin.push_back(static_cast<std::uint32_t>(keys.size()));
+    });
+  }
+
+  const Optimization_problem<n>& p_;
+  const Workers& workers_;
+  std::vector<int> column_;
+  int size_ = 0;
+  std::vector<std::uint32_t> moving_cells_;
+  // refill's blocks of moving cells, small enough for their parts to stay in the L2 cache, and
+  // for each block the incidences of its cells' free vertices: the columns of P they fall in and,
+  // per column, (position of the cell in the block) * (n + 1) + (the vertex's place in the cell)
+  static constexpr std::size_t block = 8192;
+  struct Block_incidences
+  {
+    std::vector<std::uint32_t> columns, begin, entries;
+  };
+  std::vector<Block_incidences> blocks_;
+  Eigen::SparseMatrix<double> P_;
+  std::vector<int> slots_;
+};
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H

@@ -1,0 +1,122 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Everything the public functions read from a named-parameter pack, in one place: the options of
+// the optimization, and, through an adapter (triangle_mesh_adapter.h, c3t3_adapter.h), the vertex
+// weights and the constraints of the problem.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NAMED_PARAMETERS_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NAMED_PARAMETERS_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// What minimize() does, beyond the problem itself.
+struct Options
+{
+  std::size_t iterations = 100;
+  double threshold = 1e-4;
+  Local_solver solver = Local_solver::GRADIENT_DESCENT;
+  Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
+  Schedule schedule = Schedule::ALTERNATING;
+  bool harmonic_start = true;   // false by default with Schedule::LOCAL (read_options)
+  bool global_injectivity = false;   // guard the boundary of free boundary vertices
+  int threads = 1;
+  Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
+  std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
+};
+
+template <class NamedParameters>
+Options read_options(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Options o;
+  o.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), o.iterations);
+  o.threshold = choose_parameter(get_parameter(np, internal_np::convergence_threshold), o.threshold);
+  o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
+  o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
+  o.schedule = choose_parameter(get_parameter(np, internal_np::schedule), o.schedule);
+  o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
+  o.global_injectivity = choose_parameter(get_parameter(np, internal_np::preserve_global_injectivity), o.global_injectivity);
+  o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
+  o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
+                                      o.schedule != Schedule::LOCAL);
+  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
+  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
+    o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };
+  if(o.threads < 0)
+    throw Invalid_input("the number of threads must be 0 (all) or positive");
+  if(!(o.threshold >= 0))
+    throw Invalid_input("the convergence threshold must be a non-negative number");
+  return o;
+}
+
+// omega(v) for the adapter's vertices from `vertex_weight_map` (empty: omega = 1); throws unless
+// every weight is finite and positive.
+template <class Adapter, class NamedParameters>
+std::vector<double> read_vertex_weights(const Adapter& adapter, const NamedParameters& np)
+{
+  std::vector<double> w;
+  auto weights = CGAL::parameters::get_parameter(np, internal_np::vertex_weight_map);
+  if constexpr(!std::is_same<decltype(weights), CGAL::internal_np::Param_not_found>::value) {
+    w.reserve(adapter.vertex_of.size());
+    for(const auto& v : adapter.vertex_of) {
+      w.push_back(static_cast<double>(get(weights, v)));
+      if(!(w.back() > 0) || !std::isfinite(w.back()))
+        throw Invalid_input("vertex " + std::to_string(w.size() - 1) + " has a weight that is not finite and positive");
+    }
+  }
+  return w;
+}
+
+// Which of the adapter's vertices are free: not in `vertex_is_constrained_map`, or, without it,
+// not on the boundary (the mesh's border, the complex's boundary).
+template <class Adapter, class NamedParameters>
+std::vector<unsigned char> read_free_vertices(const Adapter& adapter, const NamedParameters& np)
+{
+  auto constrained = CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_is_constrained);
+  std::vector<unsigned char> is_free(adapter.vertex_of.size());
+  for(std::size_t i = 0; i < is_free.size(); ++i) {
+    if constexpr(std::is_same<decltype(constrained), CGAL::internal_np::Param_not_found>::value)
+      is_free[i] = !adapter.on_boundary[i];
+    else
+      is_free[i] = !get(constrained, adapter.vertex_of[i]);
+  }
+  return is_free;
+}
+
+// The problem of an adapter's map (moved out of the adapter, which keeps its handles) with the
+// named parameters' vertex weights, constraints and cell weighting.
+template <class Adapter, class NamedParameters>
+Optimization_problem<Adapter::dimension> make_problem(Adapter& adapter, const NamedParameters& np)
+{
+  Optimization_problem<Adapter::dimension> problem;
+  problem.omega = read_vertex_weights(adapter, np);
+  problem.is_free = read_free_vertices(adapter, np);
+  problem.map = std::move(adapter.map);
+  problem.finalize(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cell_weighting),
+                                                      Cell_weighting::AVERAGE_VOLUME));
+  return problem;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NAMED_PARAMETERS_H

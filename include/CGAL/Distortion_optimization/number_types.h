@@ -1,0 +1,90 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The numbers a measure computes with: the package's NaN and infinity, and the lanes through
+// which the kernel evaluates several cells at once. A measure's invariant form (measures.h) is
+// written once for a `double` (one cell) and for `lanes::Cell_lanes` (one cell per lane): with
+// GCC a vector of two doubles (one SSE2 register, which every x86-64 has; wider vectors measured
+// no faster, the kernel being bound by gathering vertices into lanes), elsewhere a plain double.
+// Arithmetic, comparisons and ?: act lane by lane on both; the helpers below make up the rest.
+//
+// The 3D singular-value kernel (internal/svd.h) batches eight cells in an Eigen array instead:
+// it needs square roots and clamps, which Eigen vectorizes on its arrays and GCC's vector
+// extension does not, and a chain of dependent roots needs eight independent lanes to fill the
+// pipeline, where the invariant forms are bound by the gather and two lanes suffice.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
+#define CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The value of a normalized measure on an inverted or degenerate cell.
+constexpr double infinity = std::numeric_limits<double>::infinity();
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The value of every measure on a cell whose Jacobian has a non-finite entry.
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// Lane-by-lane helpers for the number types `T` of a measure's `value_of_invariants`: `double`
+/// or `Cell_lanes`.
+namespace lanes {
+
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__INTEL_COMPILER)
+typedef double Cell_lanes __attribute__((vector_size(16)));
+#else
+typedef double Cell_lanes;
+#endif
+
+template <class T>
+constexpr int count = static_cast<int>(sizeof(T) / sizeof(double));
+
+template <class T>
+double get(const T& x, int i)
+{
+  if constexpr(std::is_same_v<T, double>) return (void)i, x;
+  else return x[i];
+}
+
+template <class T>
+void set(T& x, int i, double value)
+{
+  if constexpr(std::is_same_v<T, double>) (void)i, x = value;
+  else x[i] = value;
+}
+
+/// x in every lane.
+template <class T>
+T broadcast(double x)
+{
+  if constexpr(std::is_same_v<T, double>) return x;
+  else return T{} + x;
+}
+
+template <class T>
+bool any_nonzero(const T& x)
+{
+  for(int i = 0; i < count<T>; ++i)
+    if(get(x, i) != 0) return true;
+  return false;
+}
+
+/// The cube root of each lane (no SIMD instruction computes it).
+template <class T>
+T cbrt(const T& x)
+{
+  T r = x;
+  for(int i = 0; i < count<T>; ++i) set(r, i, std::cbrt(get(x, i)));
+  return r;
+}
+
+} // namespace lanes
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
