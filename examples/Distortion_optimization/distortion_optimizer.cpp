@@ -161,8 +161,8 @@ Mesh to_mesh(const DO::IO::Triangle_soup& soup, const std::string& name)
 {
   Mesh mesh;
   for(const auto& p : soup.points) mesh.add_vertex(K::Point_3(p[0], p[1], p[2]));
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f) {
-    const auto& t = soup.triangles[f];
+  for(std::size_t f = 0; f < soup.cells.size(); ++f) {
+    const auto& t = soup.cells[f];
     if(mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2])) == Mesh::null_face())
       throw DO::Invalid_input(name + ": face " + std::to_string(f) +
                               " makes the mesh non-manifold or inconsistently oriented");
@@ -290,7 +290,7 @@ int run_triangles(const Command_line& c)
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
   if(!c.target.empty()) {
     const DO::IO::Triangle_soup target = DO::IO::read_triangle_soup(c.target);
-    check_same_cells(c.target, source.points, source.triangles, target.points, target.triangles, "face");
+    check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "face");
     for(std::size_t i = 0; i < target.points.size(); ++i) {
       if(target.points[i][2] != 0)
         throw DO::Invalid_input(c.target + ": vertex " + std::to_string(i) + " has z != 0 (the target must be planar)");
@@ -326,7 +326,7 @@ int run_triangles(const Command_line& c)
   });
 
   DO::IO::Triangle_soup output;
-  output.triangles = source.triangles;
+  output.cells = source.cells;
   for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
   if(DO::IO::internal::extension(c.output) == "vtu") {
     auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
@@ -337,7 +337,7 @@ int run_triangles(const Command_line& c)
     });
     std::vector<double> values;
     for(auto f : mesh.faces()) values.push_back(per_face[f]);
-    DO::IO::write_VTU(c.output, output.points, output.triangles, {{measure_name, values}});
+    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}});
   } else {
     DO::IO::write_triangle_soup(c.output, output);
   }
@@ -351,10 +351,10 @@ int run_tetrahedra(const Command_line& c)
   DO::IO::Tetrahedron_soup target = source;
   if(!c.target.empty()) {
     target = DO::IO::read_tetrahedron_soup(c.target);
-    check_same_cells(c.target, source.points, source.tetrahedra, target.points, target.tetrahedra, "tetrahedron");
+    check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "tetrahedron");
   }
   C3t3 c3t3;
-  const auto handles = DO::c3t3_from_tetrahedra(source.points, source.tetrahedra, c3t3);
+  const auto handles = DO::c3t3_from_tetrahedra(source.points, source.cells, c3t3);
   std::unordered_map<Tr::Vertex_handle, K::Point_3> storage;
   std::unordered_map<Tr::Vertex_handle, std::size_t> index;
   for(std::size_t i = 0; i < handles.size(); ++i)
@@ -396,17 +396,17 @@ int run_tetrahedra(const Command_line& c)
                                       DO::parameters::cell_distortion_map(boost::associative_property_map<decltype(per_cell)>(per_cell)));
     });
     std::vector<double> values;
-    for(const auto& t : source.tetrahedra) {
+    for(const auto& t : source.cells) {
       Tr::Cell_handle cell;
       int i0, i1, i2, i3;
       c3t3.triangulation().is_cell(handles[t[0]], handles[t[1]], handles[t[2]], handles[t[3]], cell, i0, i1, i2, i3);
       values.push_back(per_cell.at(cell));
     }
-    DO::IO::write_VTU(c.output, output.points, output.tetrahedra, {{measure_name, values}});
+    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}});
   } else {
     DO::IO::write_MEDIT(c.output, output);
   }
-  report(c, source.tetrahedra.size(), source.points.size(), measure_name, r);
+  report(c, source.cells.size(), source.points.size(), measure_name, r);
   return 0;
 }
 

@@ -76,10 +76,10 @@ void write_planar_pair(const std::string& source, const std::string& target, dou
   for(int j = 0; j < k; ++j)
     for(int i = 0; i < k; ++i) {
       const std::size_t a = j * (k + 1) + i, b = a + 1, c = a + k + 1, d = c + 1;
-      s.triangles.push_back({a, b, d});
-      s.triangles.push_back({a, d, c});
+      s.cells.push_back({a, b, d});
+      s.cells.push_back({a, d, c});
     }
-  t.triangles = s.triangles;
+  t.cells = s.cells;
   IO::write_triangle_soup(source, s);
   IO::write_triangle_soup(target, t);
 }
@@ -99,8 +99,8 @@ IO::Triangle_soup helical_ramp()
   for(int j = 0; j < nt; ++j)
     for(int i = 0; i < nr; ++i) {
       const std::size_t a = j * (nr + 1) + i, b = a + 1, c = a + nr + 1, d = c + 1;
-      ramp.triangles.push_back({a, b, d});
-      ramp.triangles.push_back({a, d, c});
+      ramp.cells.push_back({a, b, d});
+      ramp.cells.push_back({a, d, c});
     }
   return ramp;
 }
@@ -110,7 +110,7 @@ std::size_t border_crossings(const IO::Triangle_soup& soup)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   std::map<std::pair<std::size_t, std::size_t>, int> uses;
-  for(const auto& t : soup.triangles)
+  for(const auto& t : soup.cells)
     for(int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
   std::vector<std::pair<std::size_t, std::size_t>> border;
   for(const auto& [edge, count] : uses)
@@ -165,7 +165,7 @@ TEST(CommandLine, OptimizesAPlanarPairAndReportsJson)
   // The output has the source's connectivity, z = 0, and the border where the target had it.
   const IO::Triangle_soup out = IO::read_triangle_soup(o), in = IO::read_triangle_soup(t);
   ASSERT_EQ(out.points.size(), in.points.size());
-  EXPECT_EQ(out.triangles, in.triangles);
+  EXPECT_EQ(out.cells, in.cells);
   for(std::size_t i = 0; i < out.points.size(); ++i) {
     EXPECT_EQ(out.points[i][2], 0.);
     const double x = IO::read_triangle_soup(s).points[i][0], y = IO::read_triangle_soup(s).points[i][1];
@@ -198,7 +198,7 @@ TEST(CommandLine, TutteStartForADiskWithoutTarget)
   const Tool_run result = run("--source " + data("nefertiti.off") + " --output " + o + " --measure conformal*isometric");
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_NE(result.output.find("inverted_cells  0"), std::string::npos) << result.output;
-  EXPECT_EQ(IO::read_triangle_soup(o).triangles, IO::read_triangle_soup(data("nefertiti.off")).triangles);
+  EXPECT_EQ(IO::read_triangle_soup(o).cells, IO::read_triangle_soup(data("nefertiti.off")).cells);
 }
 
 TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
@@ -225,7 +225,7 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure(base + " --target " + fewer, 1, "vertices");
 
   IO::Triangle_soup rewired = IO::read_triangle_soup(t);
-  std::swap(rewired.triangles[3][1], rewired.triangles[3][2]);
+  std::swap(rewired.cells[3][1], rewired.cells[3][2]);
   const std::string other = temp("other_connectivity.off");
   IO::write_triangle_soup(other, rewired);
   expect_failure(base + " --target " + other, 1, "face 3 differs from the source's");

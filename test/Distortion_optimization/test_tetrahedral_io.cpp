@@ -59,7 +59,7 @@ IO::Tetrahedron_soup two_tetrahedra()
 {
   IO::Tetrahedron_soup s;
   s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1. / 3, 2. / 3, 0.1 + 0.2}};
-  s.tetrahedra = {{0, 1, 2, 3}, {1, 2, 3, 4}};
+  s.cells = {{0, 1, 2, 3}, {1, 2, 3, 4}};
   s.labels = {7, -2};
   return s;
 }
@@ -91,7 +91,7 @@ TEST(Medit, WriteThenReadGivesTheSameSoup)
   EXPECT_FALSE(exists(path + ".partial"));
   const IO::Tetrahedron_soup r = IO::read_tetrahedron_soup(path);
   EXPECT_EQ(r.points, s.points); // exact: 17 digits
-  EXPECT_EQ(r.tetrahedra, s.tetrahedra);
+  EXPECT_EQ(r.cells, s.cells);
   EXPECT_EQ(r.labels, s.labels);
   const std::string text = contents(path);
   EXPECT_EQ(text.rfind("MeshVersionFormatted 1\nDimension 3\nVertices\n5\n0 0 0 0\n", 0), 0u) << text;
@@ -117,10 +117,10 @@ TEST(Medit, WriterRejectsWhatTheReaderWouldRejectAndWritesNothing)
   s.labels = {1};
   EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
   s = two_tetrahedra();
-  s.tetrahedra[1][3] = 5;
+  s.cells[1][3] = 5;
   EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
   s = two_tetrahedra();
-  s.tetrahedra[1][3] = 1;
+  s.cells[1][3] = 1;
   EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
   s = two_tetrahedra();
   s.points[4][2] = std::numeric_limits<double>::infinity();
@@ -137,14 +137,14 @@ TEST(Medit, ReadsCGALSphere)
 {
   const IO::Tetrahedron_soup s = IO::read_tetrahedron_soup(DISTORTION_OPTIMIZATION_DATA_DIR "/sphere.mesh");
   ASSERT_EQ(s.points.size(), 757u);
-  ASSERT_EQ(s.tetrahedra.size(), 3586u);
+  ASSERT_EQ(s.cells.size(), 3586u);
   ASSERT_EQ(s.labels.size(), 3586u);
   EXPECT_EQ(s.points.front()[0], -0.00017958008027845786);
   EXPECT_EQ(s.points.front()[1], -0.29158438056560654);
   EXPECT_EQ(s.points.front()[2], -0.3988195263311396);
   EXPECT_EQ(s.points.back()[2], 0.42226421765882671);
-  EXPECT_EQ(s.tetrahedra.front(), (std::array<std::size_t, 4>{668, 308, 482, 628}));
-  EXPECT_EQ(s.tetrahedra.back(), (std::array<std::size_t, 4>{230, 406, 94, 755}));
+  EXPECT_EQ(s.cells.front(), (std::array<std::size_t, 4>{668, 308, 482, 628}));
+  EXPECT_EQ(s.cells.back(), (std::array<std::size_t, 4>{230, 406, 94, 755}));
   for(int label : s.labels) EXPECT_EQ(label, 1);
 }
 
@@ -176,16 +176,16 @@ TEST(Medit, SkipsOtherSectionsAcceptsAnyCaseCommentsAndValuesSplitOverLines)
   ASSERT_EQ(s.points.size(), 5u);
   EXPECT_EQ(s.points[2], (std::array<double, 3>{0, 1, 0}));
   EXPECT_EQ(s.points[4], (std::array<double, 3>{0.5, 0.5, 0.5}));
-  ASSERT_EQ(s.tetrahedra.size(), 2u);
-  EXPECT_EQ(s.tetrahedra[0], (std::array<std::size_t, 4>{0, 1, 2, 3}));
-  EXPECT_EQ(s.tetrahedra[1], (std::array<std::size_t, 4>{1, 2, 3, 4}));
+  ASSERT_EQ(s.cells.size(), 2u);
+  EXPECT_EQ(s.cells[0], (std::array<std::size_t, 4>{0, 1, 2, 3}));
+  EXPECT_EQ(s.cells[1], (std::array<std::size_t, 4>{1, 2, 3, 4}));
   EXPECT_EQ(s.labels, std::vector<int>({5, 6}));
 }
 
 TEST(Medit, EndIsOptional)
 {
   const IO::Tetrahedron_soup s = read(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\n");
-  EXPECT_EQ(s.tetrahedra.size(), 1u);
+  EXPECT_EQ(s.cells.size(), 1u);
   EXPECT_EQ(s.labels, std::vector<int>({0}));
 }
 
@@ -241,7 +241,7 @@ TEST(Medit, RejectsBadCounts)
   EXPECT_REJECTED(header + four_vertices + "Tetrahedra 99999999999999999999\n", "bad.mesh:9: '99999999999999999999' is not an integer");
   EXPECT_REJECTED(header + four_vertices + "Triangles 3\n1 2 3 0\n1 2 4 0\n", "bad.mesh:9: Triangles count 3 is more than");
   // Exactly as many bytes as the entries need is fine.
-  EXPECT_EQ(read(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nCorners 2\n1 2").tetrahedra.size(), 1u);
+  EXPECT_EQ(read(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nCorners 2\n1 2").cells.size(), 1u);
   EXPECT_REJECTED(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nCorners 3\n1 2",
                   "bad.mesh:10: Corners count 3 is more than the rest of the file can hold");
 }
@@ -260,7 +260,7 @@ TEST(Medit, UnseekableStreamWithAHugeCountFailsAsTruncatedWithoutAllocating)
   // And a good file reads the same through such a stream.
   Unseekable_buffer good(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nEnd\n");
   std::istream in2(&good);
-  EXPECT_EQ(IO::read_MEDIT(in2, "pipe").tetrahedra.size(), 1u);
+  EXPECT_EQ(IO::read_MEDIT(in2, "pipe").cells.size(), 1u);
 }
 
 TEST(Medit, RejectsBadValues)
@@ -359,7 +359,7 @@ TEST(Vtu, TetrahedraWithCellArrays)
   const std::string path = temp("tets.vtu");
   const IO::Tetrahedron_soup s = two_tetrahedra();
   const double inf = std::numeric_limits<double>::infinity();
-  IO::write_VTU(path, s.points, s.tetrahedra, {{"K", {1.25, inf}}, {"a<b & \"c\"", {-inf, 0.1}}});
+  IO::write_VTU(path, s.points, s.cells, {{"K", {1.25, inf}}, {"a<b & \"c\"", {-inf, 0.1}}});
   EXPECT_FALSE(exists(path + ".partial"));
   const std::string xml = contents(path);
 
@@ -419,17 +419,17 @@ TEST(Vtu, RejectsBadInputAndWritesNothing)
     }
     return std::string();
   };
-  EXPECT_EQ(message(s.points, s.tetrahedra, {{"K", {1}}}), path + ": cell array 'K' has 1 values for 2 cells");
-  EXPECT_EQ(message(s.points, s.tetrahedra, {{"K", {1, nan}}}), path + ": cell array 'K' is NaN at cell 1");
-  EXPECT_EQ(message(s.points, s.tetrahedra, {{"K", {1, 2}}, {"K", {1, 2}}}), path + ": cell array 'K' given twice");
-  EXPECT_EQ(message(s.points, s.tetrahedra, {{"", {1, 2}}}), path + ": a cell array has an empty name");
-  EXPECT_EQ(message(s.points, s.tetrahedra, {{"a\nb", {1, 2}}}), path + ": cell array name 'a\nb' has a control character");
-  std::vector<std::array<std::size_t, 4>> out_of_range = s.tetrahedra;
+  EXPECT_EQ(message(s.points, s.cells, {{"K", {1}}}), path + ": cell array 'K' has 1 values for 2 cells");
+  EXPECT_EQ(message(s.points, s.cells, {{"K", {1, nan}}}), path + ": cell array 'K' is NaN at cell 1");
+  EXPECT_EQ(message(s.points, s.cells, {{"K", {1, 2}}, {"K", {1, 2}}}), path + ": cell array 'K' given twice");
+  EXPECT_EQ(message(s.points, s.cells, {{"", {1, 2}}}), path + ": a cell array has an empty name");
+  EXPECT_EQ(message(s.points, s.cells, {{"a\nb", {1, 2}}}), path + ": cell array name 'a\nb' has a control character");
+  std::vector<std::array<std::size_t, 4>> out_of_range = s.cells;
   out_of_range[1][2] = 5;
   EXPECT_EQ(message(s.points, out_of_range, {}), path + ": tetrahedron 1 has vertex index 5 out of range");
   std::vector<std::array<double, 3>> infinite = s.points;
   infinite[3][0] = -std::numeric_limits<double>::infinity();
-  EXPECT_EQ(message(infinite, s.tetrahedra, {}), path + ": vertex 3 has a non-finite coordinate");
+  EXPECT_EQ(message(infinite, s.cells, {}), path + ": vertex 3 has a non-finite coordinate");
   const std::vector<std::array<std::size_t, 3>> triangles = {{0, 1, 7}};
   EXPECT_EQ(message(s.points, triangles, {}), path + ": triangle 0 has vertex index 7 out of range");
   EXPECT_FALSE(exists(path));

@@ -30,8 +30,8 @@ void check(const std::vector<std::array<double, 3>>& points, const Cells& cells)
       if(i >= points.size()) std::abort();
 }
 
-void check(const IO::Triangle_soup& s) { check(s.points, s.triangles); }
-void check(const IO::Tetrahedron_soup& s) { check(s.points, s.tetrahedra); }
+void check(const IO::Triangle_soup& s) { check(s.points, s.cells); }
+void check(const IO::Tetrahedron_soup& s) { check(s.points, s.cells); }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

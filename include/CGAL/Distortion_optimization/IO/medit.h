@@ -11,6 +11,7 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/IO/simplex_soup.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 
 #include <algorithm>
@@ -29,16 +30,6 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace IO {
 
-/// \ingroup PkgDistortionOptimizationIO
-/// Vertices and tetrahedra as they appear in a file (0-based indices), with the Medit reference
-/// of each tetrahedron (CGAL writes the subdomain index there). Vertex references are not kept.
-struct Tetrahedron_soup
-{
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> tetrahedra;
-  std::vector<int> labels; ///< one per tetrahedron, the Medit reference
-};
-
 namespace internal {
 
 // The sections of a 3D Medit file, with the number of values of each entry (libMeshb's table,
@@ -55,19 +46,13 @@ struct Medit_section
 inline const Medit_section* medit_section(const std::string& keyword)
 {
   static const Medit_section sections[] = {
-    {"Vertices", 4},               {"Tetrahedra", 5},
-    {"Edges", 3},                  {"Triangles", 4},
-    {"Quadrilaterals", 5},         {"Prisms", 7},
-    {"Pentahedra", 7},             {"Pyramids", 6},
-    {"Hexahedra", 9},              {"Corners", 1},
-    {"Ridges", 1},                 {"RequiredVertices", 1},
-    {"RequiredEdges", 1},          {"RequiredTriangles", 1},
-    {"RequiredQuadrilaterals", 1}, {"Normals", 3},
-    {"Tangents", 3},               {"NormalAtVertices", 2},
-    {"TangentAtVertices", 2},      {"NormalAtTriangleVertices", 3},
-    {"NormalAtQuadrilateralVertices", 4}, {"TangentAtEdgeVertices", 3},
-    {"EdgesP2", 4},                {"TrianglesP2", 7},
-    {"QuadrilateralsQ2", 10}};
+    // cells, first and second order
+    {"Vertices", 4}, {"Tetrahedra", 5}, {"Edges", 3}, {"Triangles", 4}, {"Quadrilaterals", 5}, {"Prisms", 7},
+    {"Pentahedra", 7}, {"Pyramids", 6}, {"Hexahedra", 9}, {"EdgesP2", 4}, {"TrianglesP2", 7}, {"QuadrilateralsQ2", 10},
+    // lists of vertices and cells, normals and tangents
+    {"Corners", 1}, {"Ridges", 1}, {"RequiredVertices", 1}, {"RequiredEdges", 1}, {"RequiredTriangles", 1},
+    {"RequiredQuadrilaterals", 1}, {"Normals", 3}, {"Tangents", 3}, {"NormalAtVertices", 2}, {"TangentAtVertices", 2},
+    {"NormalAtTriangleVertices", 3}, {"NormalAtQuadrilateralVertices", 4}, {"TangentAtEdgeVertices", 3}};
   for(const Medit_section& s : sections) {
     std::size_t i = 0;
     while(s.name[i] != '\0' && i < keyword.size() &&
@@ -204,7 +189,7 @@ private:
   {
     const long long n = count("Tetrahedra", 5);
     const long long nv = static_cast<long long>(soup_.points.size());
-    soup_.tetrahedra.reserve(capped(n));
+    soup_.cells.reserve(capped(n));
     soup_.labels.reserve(capped(n));
     for(long long c = 0; c < n; ++c) {
       std::array<std::size_t, 4> tet;
@@ -222,7 +207,7 @@ private:
       const long long label = tokens_.integer(s);
       if(label < std::numeric_limits<int>::min() || label > std::numeric_limits<int>::max())
         tokens_.fail("tetrahedron " + std::to_string(c) + " has reference " + s + " out of range");
-      soup_.tetrahedra.push_back(tet);
+      soup_.cells.push_back(tet);
       soup_.labels.push_back(static_cast<int>(label));
     }
   }
@@ -268,7 +253,7 @@ inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Invalid_input(path + ": cannot open the file");
   Tetrahedron_soup soup = read_MEDIT(in, path);
-  if(soup.tetrahedra.empty()) throw Invalid_input(path + ": no tetrahedron");
+  if(soup.cells.empty()) throw Invalid_input(path + ": no tetrahedron");
   return soup;
 }
 
@@ -282,14 +267,14 @@ inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
 /// a vertex, i.e. whenever `read_MEDIT()` would reject the file; or if the file cannot be written.
 inline void write_MEDIT(const std::string& path, const Tetrahedron_soup& soup)
 {
-  if(!soup.labels.empty() && soup.labels.size() != soup.tetrahedra.size())
+  if(!soup.labels.empty() && soup.labels.size() != soup.cells.size())
     throw Invalid_input(path + ": " + std::to_string(soup.labels.size()) + " labels for " +
-                        std::to_string(soup.tetrahedra.size()) + " tetrahedra");
+                        std::to_string(soup.cells.size()) + " tetrahedra");
   for(std::size_t v = 0; v < soup.points.size(); ++v)
     for(double x : soup.points[v])
       if(!std::isfinite(x)) throw Invalid_input(path + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
-  for(std::size_t c = 0; c < soup.tetrahedra.size(); ++c) {
-    const auto& t = soup.tetrahedra[c];
+  for(std::size_t c = 0; c < soup.cells.size(); ++c) {
+    const auto& t = soup.cells[c];
     for(int i = 0; i < 4; ++i) {
       if(t[i] >= soup.points.size())
         throw Invalid_input(path + ": tetrahedron " + std::to_string(c) + " has vertex index " + std::to_string(t[i]) +
@@ -301,9 +286,9 @@ inline void write_MEDIT(const std::string& path, const Tetrahedron_soup& soup)
   write_file_atomically(path, [&](std::ostream& out) {
     out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << soup.points.size() << '\n';
     for(const auto& p : soup.points) out << p[0] << ' ' << p[1] << ' ' << p[2] << " 0\n";
-    out << "Tetrahedra\n" << soup.tetrahedra.size() << '\n';
-    for(std::size_t c = 0; c < soup.tetrahedra.size(); ++c) {
-      const auto& t = soup.tetrahedra[c];
+    out << "Tetrahedra\n" << soup.cells.size() << '\n';
+    for(std::size_t c = 0; c < soup.cells.size(); ++c) {
+      const auto& t = soup.cells[c];
       out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
           << (soup.labels.empty() ? 1 : soup.labels[c]) << '\n';
     }

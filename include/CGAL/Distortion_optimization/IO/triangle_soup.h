@@ -10,6 +10,7 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/IO/simplex_soup.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 
 #include <array>
@@ -30,14 +31,6 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace IO {
-
-/// \ingroup PkgDistortionOptimizationIO
-/// Vertices and triangles as they appear in a file (0-based indices).
-struct Triangle_soup
-{
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-};
 
 namespace internal {
 
@@ -90,7 +83,7 @@ inline Triangle_soup read_OFF(std::istream& in, const std::string& name = "OFF i
       tri[i] = static_cast<std::size_t>(index);
     }
     internal::check_triangle(reader, tri, static_cast<std::size_t>(f));
-    soup.triangles.push_back(tri);
+    soup.cells.push_back(tri);
   }
   return soup;
 }
@@ -109,7 +102,7 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
       if(t.size() < 4) reader.fail("vertex with fewer than 3 coordinates");
       soup.points.push_back({reader.coordinate(t[1]), reader.coordinate(t[2]), reader.coordinate(t[3])});
     } else if(t[0] == "f") {
-      const std::size_t f = soup.triangles.size();
+      const std::size_t f = soup.cells.size();
       if(t.size() != 4) reader.fail("face " + std::to_string(f) + " is not a triangle (" + std::to_string(t.size() - 1) + " vertices)");
       std::array<std::size_t, 3> tri;
       for(int i = 0; i < 3; ++i) {
@@ -121,7 +114,7 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
         tri[i] = static_cast<std::size_t>(index);
       }
       internal::check_triangle(reader, tri, f);
-      soup.triangles.push_back(tri);
+      soup.cells.push_back(tri);
     }
   }
   return soup;
@@ -137,7 +130,7 @@ inline Triangle_soup read_triangle_soup(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Invalid_input(path + ": cannot open the file");
   Triangle_soup soup = e == "off" ? read_OFF(in, path) : read_OBJ(in, path);
-  if(soup.triangles.empty()) throw Invalid_input(path + ": no triangle");
+  if(soup.cells.empty()) throw Invalid_input(path + ": no triangle");
   return soup;
 }
 
@@ -149,12 +142,12 @@ inline void write_triangle_soup(const std::string& path, const Triangle_soup& so
   if(e != "off" && e != "obj") throw Invalid_input(path + ": unsupported extension (use .off or .obj)");
   write_file_atomically(path, [&](std::ostream& out) {
     if(e == "off") {
-      out << "OFF\n" << soup.points.size() << ' ' << soup.triangles.size() << " 0\n";
+      out << "OFF\n" << soup.points.size() << ' ' << soup.cells.size() << " 0\n";
       for(const auto& p : soup.points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-      for(const auto& t : soup.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+      for(const auto& t : soup.cells) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
     } else {
       for(const auto& p : soup.points) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-      for(const auto& t : soup.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+      for(const auto& t : soup.cells) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     }
   });
 }

@@ -122,11 +122,16 @@ public:
              int iterations, double tolerance) const
   {
     const std::size_t size = static_cast<std::size_t>(size_);
+    // P's arrays in locals: the compiler cannot otherwise tell that writing pu leaves them alone.
+    const int *outer = P_.outerIndexPtr(), *inner = P_.innerIndexPtr();
+    const double* values = P_.valuePtr();
     const auto product = [&](const Eigen::VectorXd& u, Eigen::VectorXd& pu) {
+      const double* ud = u.data();
+      double* pud = pu.data();
       workers_.for_each(size, 2048, [&](std::size_t i) {
         double sum = 0;
-        for(int k = P_.outerIndexPtr()[i]; k < P_.outerIndexPtr()[i + 1]; ++k) sum += P_.valuePtr()[k] * u[P_.innerIndexPtr()[k]];
-        pu[i] = sum;
+        for(int k = outer[i]; k < outer[i + 1]; ++k) sum += values[k] * ud[inner[k]];
+        pud[i] = sum;
       });
     };
     workers_.for_each(n, 1, [&](std::size_t d) {

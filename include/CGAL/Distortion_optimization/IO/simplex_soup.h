@@ -1,0 +1,40 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What the package's readers return and its writers take: a mesh as it appears in a file.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_IO_SIMPLEX_SOUP_H
+#define CGAL_DISTORTION_OPTIMIZATION_IO_SIMPLEX_SOUP_H
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace IO {
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Vertices and cells of `k` vertices each (0-based indices) as they appear in a file, with a
+/// label per cell where the format has one (Medit's reference of a tetrahedron, where CGAL writes
+/// the subdomain index), else no label. Vertex references are not kept.
+template <std::size_t k>
+struct Simplex_soup
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, k>> cells;
+  std::vector<int> labels;
+};
+
+/// \ingroup PkgDistortionOptimizationIO
+/// A triangle mesh as read from an OFF or OBJ file (no labels).
+using Triangle_soup = Simplex_soup<3>;
+/// \ingroup PkgDistortionOptimizationIO
+/// A tetrahedral mesh as read from a Medit file (a label per tetrahedron).
+using Tetrahedron_soup = Simplex_soup<4>;
+
+} // namespace IO
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_IO_SIMPLEX_SOUP_H
