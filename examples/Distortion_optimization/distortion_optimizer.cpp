@@ -2,7 +2,7 @@
 //
 //   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
 //                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
-//                        [--schedule alternating|local|global]
+//                        [--schedule alternating|local|global] [--untangle]
 //
 // S, T, O: OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same vertices
 // and cells in the same order; a planar target has z = 0. Without --target, a disk-topology
@@ -71,7 +71,7 @@ std::string usage()
   return
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
-  "         [--threads N] [--report R.json] [--schedule alternating|local|global]\n"
+  "         [--threads N] [--report R.json] [--schedule alternating|local|global] [--untangle]\n"
   "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
   "               vertices and cells in the same order; a planar target has z = 0; without\n"
   "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
@@ -87,6 +87,8 @@ std::string usage()
   "  --threads    number of threads (default 1); the output is the same for every run with\n"
   "               the same number\n"
   "  --report     also write the results as JSON\n"
+  "  --untangle   when the start has inverted or flat cells, untangle it first (then optimize);\n"
+  "               without it such a start is refused under a measure infinite there\n"
   "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
   "               harmonic start), local (the paper's sweeps only) or global\n";
 }
@@ -102,6 +104,7 @@ struct Command_line
     schedule = "alternating";
   std::size_t iterations = 100, threads = 1;
   double threshold = 1e-4;
+  bool untangle = false;
 };
 
 template <class T>
@@ -120,6 +123,11 @@ Command_line parse(int argc, char** argv)
   for(int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if(option == "--help" || option == "-h") throw Usage_error("");
+    if(option == "--untangle") {   // the one option without a value
+      if(c.untangle) throw Usage_error(option + " is given twice");
+      c.untangle = true;
+      continue;
+    }
     if(i + 1 >= argc) throw Usage_error(option + " needs a value");
     const std::string value = argv[++i];
     if(seen.count(option)) throw Usage_error(option + " is given twice");
@@ -233,7 +241,7 @@ DO::Result with_boundary_guard(const Command_line& c, const Run& run)
   if(c.fix == "boundary") return run(false);
   try {
     return run(true);
-  } catch(const DO::Invalid_input& guarded) {
+  } catch(const DO::Crossing_start_boundary& guarded) {
     DO::Result r = run(false);   // throws again if the input was bad for another reason
     std::cerr << "distortion_optimizer: warning: " << guarded.what() << "; optimized without the guard\n";
     return r;
@@ -247,7 +255,8 @@ auto common_parameters(const Command_line& c)
   const auto schedule = c.schedule == "local" ? DO::Schedule::LOCAL
                       : c.schedule == "global" ? DO::Schedule::GLOBAL : DO::Schedule::ALTERNATING;
   return DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)),
-    DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::convergence_threshold(c.threshold))))
+    DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::untangle_first(c.untangle,
+      DO::parameters::convergence_threshold(c.threshold)))))
     .number_of_iterations(c.iterations);
 }
 
@@ -268,7 +277,10 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
        << ",\n  \"measure\": \"" << measure_name << "\",\n  \"initial_energy\": " << json_number(r.initial_energy)
        << ",\n  \"final_energy\": " << json_number(r.final_energy) << ",\n  \"sweeps\": " << r.iterations
        << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"inverted_cells\": " << r.inverted_cells
-       << ",\n  \"converged\": " << (r.converged ? "true" : "false") << ",\n  \"energy_per_sweep\": [";
+       << ",\n  \"converged\": " << (r.converged ? "true" : "false")
+       << ",\n  \"inverted_start_cells\": " << r.inverted_start_cells << ",\n  \"untangle_iterations\": "
+       << r.untangle_iterations << ",\n  \"untangle_seconds\": " << json_number(r.untangle_seconds)
+       << ",\n  \"energy_per_sweep\": [";
   for(std::size_t i = 0; i < r.energy_per_iteration.size(); ++i)
     json << (i ? ", " : "") << json_number(r.energy_per_iteration[i]);
   json << "]\n}\n";
@@ -278,6 +290,9 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
               "final_energy    %.12g\nsweeps          %zu\nseconds         %.3f\ninverted_cells  %zu\n",
               cells, vertices, measure_name.c_str(), r.initial_energy, r.final_energy, r.iterations, r.seconds,
               r.inverted_cells);
+  if(c.untangle)
+    std::printf("inverted_start_cells  %zu\nuntangle_iterations   %zu\nuntangle_seconds      %.3f\n", r.inverted_start_cells,
+                r.untangle_iterations, r.untangle_seconds);
 }
 
 int run_triangles(const Command_line& c)

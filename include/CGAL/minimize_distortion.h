@@ -9,7 +9,7 @@
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
-#include <CGAL/Distortion_optimization/internal/minimize.h>
+#include <CGAL/Distortion_optimization/internal/run_on_adapter.h>
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 
 #include <CGAL/Named_function_parameters.h>

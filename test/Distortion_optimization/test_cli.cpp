@@ -201,6 +201,43 @@ TEST(CommandLine, TutteStartForADiskWithoutTarget)
   EXPECT_EQ(IO::read_triangle_soup(o).cells, IO::read_triangle_soup(data("nefertiti.off")).cells);
 }
 
+TEST(CommandLine, UntangleThenOptimize)
+{
+  // Interior noise of 0.2 on a grid of spacing 1/12: a tangled start.
+  const std::string s = temp("s_tangled.off"), t = temp("t_tangled.off"), o = temp("o_tangled.off"),
+                    r = temp("r_tangled.json");
+  write_planar_pair(s, t, 0.2);
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto inverted = [](const IO::Triangle_soup& soup) {
+    std::size_t count = 0;
+    auto p = [&](std::size_t i) { return K::Point_2(soup.points[i][0], soup.points[i][1]); };
+    for(const auto& c : soup.cells) count += CGAL::orientation(p(c[0]), p(c[1]), p(c[2])) != CGAL::LEFT_TURN;
+    return count;
+  };
+  const std::size_t tangled = inverted(IO::read_triangle_soup(t));
+  ASSERT_GT(tangled, 10u);
+  // Without --untangle: today's clear error, nothing written.
+  std::remove(o.c_str());
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --measure symmetric_dirichlet");
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("untangle"), std::string::npos) << result.output;
+  EXPECT_FALSE(exists(o));
+
+  result = run("--source " + s + " --target " + t + " --output " + o + " --measure symmetric_dirichlet --untangle --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string json = slurp(r);
+  EXPECT_EQ(json_value(json, "inverted_start_cells"), tangled) << json;
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0) << json;
+  EXPECT_GT(json_value(json, "untangle_iterations"), 0) << json;
+  EXPECT_GE(json_value(json, "untangle_seconds"), 0) << json;
+  const IO::Triangle_soup out = IO::read_triangle_soup(o), in = IO::read_triangle_soup(t);
+  EXPECT_EQ(inverted(out), 0u);
+  for(std::size_t i = 0; i < out.points.size(); ++i) {
+    const double x = IO::read_triangle_soup(s).points[i][0], y = IO::read_triangle_soup(s).points[i][1];
+    if(x == 0 || y == 0 || x == 1 || y == 1) { EXPECT_EQ(out.points[i], in.points[i]); }
+  }
+}
+
 TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
 {
   const std::string s = temp("s3.off"), t = temp("t3.off"), o = temp("o3.off");

@@ -372,6 +372,55 @@ TEST(Measures, SvdFreeFormsAgreeWithTheSvdForms)
   check_svd_free_form<3>(DO::Dirichlet());
 }
 
+// The untangling barrier (Garanzha et al. 2021) is finite on inverted and flat Jacobians: its
+// analytic gradient against central differences there too, with eps large and small, its
+// invariant form against its singular-value form, and its limits.
+template <int n>
+void check_untangling_barrier()
+{
+  for(double eps : {1., 1e-2, 1e-4}) {
+    DO::Untangling_barrier m;
+    m.epsilon = eps;
+    m.reference_det = 0.7;
+    for(int trial = 0; trial < 50; ++trial) {
+      Matrix<n> J = Matrix<n>::Random();
+      if(trial == 0) J.row(0) = J.row(1);   // flat
+      Matrix<n> dJ;
+      const double value = DO::internal::jacobian_distortion<n>(m, J, dJ);
+      ASSERT_TRUE(std::isfinite(value)) << "J=\n" << J;
+      const double h = 1e-6 * std::max(eps, 1e-2);
+      Matrix<n> fd;
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j) {
+          Matrix<n> Jp = J, Jm = J;
+          Jp(i, j) += h;
+          Jm(i, j) -= h;
+          fd(i, j) = (DO::internal::jacobian_distortion<n>(m, Jp) - DO::internal::jacobian_distortion<n>(m, Jm)) / (2 * h);
+        }
+      EXPECT_LE((dJ - fd).norm(), 1e-5 * std::max(1., fd.norm())) << "eps " << eps << " J=\n" << J;
+      Matrix<n> a = Matrix<n>::Zero();
+      DO::internal::Signed_svd<n> svd;
+      DO::internal::signed_svd(J, svd);
+      EXPECT_NEAR(DO::internal::distortion_from_invariants<n>(m, J, &a), m.template value<n>(svd.sigma), 1e-10 * value);
+      const Matrix<n> b = svd.U * m.template gradient<n>(svd.sigma).asDiagonal() * svd.V.transpose();
+      EXPECT_LE((a - b).norm(), 1e-9 * std::max(1., b.norm())) << "eps " << eps;
+    }
+  }
+  // As eps -> 0: on a positive Jacobian, (1 - theta) MIPS-like + theta (D + 1/D); on an inverted
+  // one, without bound.
+  DO::Untangling_barrier m;
+  const double theta = n == 2 ? m.theta_2 : m.theta_3;
+  m.epsilon = 1e-12;
+  const Matrix<n> I = Matrix<n>::Identity();
+  EXPECT_NEAR(DO::internal::jacobian_distortion<n>(m, I), (1 - theta) * n + theta * 2, 1e-9);
+  Matrix<n> inverted = I;
+  inverted(0, 0) = -1;
+  EXPECT_GT(DO::internal::jacobian_distortion<n>(m, inverted), 1e20);
+}
+
+TEST(Measures, UntanglingBarrier2D) { check_untangling_barrier<2>(); }
+TEST(Measures, UntanglingBarrier3D) { check_untangling_barrier<3>(); }
+
 // ---------------------------------------------------------------- signed SVD
 
 template <int n>

@@ -6,6 +6,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,31 @@ std::size_t count_flipped(const Mesh& m, const UV& uv)
     if(CGAL::orientation(q[0], q[1], q[2]) != CGAL::LEFT_TURN) ++flipped;
   }
   return flipped;
+}
+
+// Pairs of border edges of the target that intersect improperly, by brute force with exact
+// predicates: edges sharing no vertex must be disjoint; edges sharing a vertex must not overlap.
+template <class Mesh, class UV>
+std::size_t border_self_intersections(const Mesh& mesh, const UV& uv)
+{
+  std::vector<std::pair<typename Mesh::Vertex_index, typename Mesh::Vertex_index>> edges;
+  for(auto h : mesh.halfedges())
+    if(mesh.is_border(h)) edges.emplace_back(mesh.source(h), mesh.target(h));
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < edges.size(); ++i)
+    for(std::size_t j = i + 1; j < edges.size(); ++j) {
+      const auto [a, b] = edges[i];
+      const auto [c, d] = edges[j];
+      const K::Segment_2 s(uv[a], uv[b]), t(uv[c], uv[d]);
+      const bool shared = a == c || a == d || b == c || b == d;
+      if(!shared) { count += CGAL::do_intersect(s, t); continue; }
+      // Sharing vertex p: improper iff the other ends are collinear with p on the same side.
+      const auto p = (a == c || a == d) ? a : b;
+      const Point_2& q = uv[p == a ? b : a];
+      const Point_2& r = uv[p == c ? d : c];
+      count += CGAL::collinear(uv[p], q, r) && CGAL::angle(q, uv[p], r) == CGAL::ACUTE;
+    }
+  return count;
 }
 
 } // namespace test_meshes

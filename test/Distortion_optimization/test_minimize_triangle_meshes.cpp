@@ -327,33 +327,6 @@ TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
   }
 }
 
-namespace {
-
-// Pairs of border edges of the target that intersect improperly, by brute force with exact
-// predicates: edges sharing no vertex must be disjoint; edges sharing a vertex must not overlap.
-std::size_t border_self_intersections(const Mesh3& mesh, const Mesh3::Property_map<Mesh3::Vertex_index, Point_2>& uv)
-{
-  std::vector<std::pair<Mesh3::Vertex_index, Mesh3::Vertex_index>> edges;
-  for(auto h : mesh.halfedges())
-    if(mesh.is_border(h)) edges.emplace_back(mesh.source(h), mesh.target(h));
-  std::size_t count = 0;
-  for(std::size_t i = 0; i < edges.size(); ++i)
-    for(std::size_t j = i + 1; j < edges.size(); ++j) {
-      const auto [a, b] = edges[i];
-      const auto [c, d] = edges[j];
-      const K::Segment_2 s(uv[a], uv[b]), t(uv[c], uv[d]);
-      const bool shared = a == c || a == d || b == c || b == d;
-      if(!shared) { count += CGAL::do_intersect(s, t); continue; }
-      // Sharing vertex p: improper iff the other ends are collinear with p on the same side.
-      const auto p = (a == c || a == d) ? a : b;
-      const Point_2& q = uv[p == a ? b : a];
-      const Point_2& r = uv[p == c ? d : c];
-      count += CGAL::collinear(uv[p], q, r) && CGAL::angle(q, uv[p], r) == CGAL::ACUTE;
-    }
-  return count;
-}
-
-} // namespace
 
 // A helical ramp of 1.2 turns (r in [1, 2], z = 0.3 theta): a disk whose flattening wants an
 // annular sector of more than 360 degrees, so an unguarded free-boundary run overlaps its ends.

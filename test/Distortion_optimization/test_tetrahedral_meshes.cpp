@@ -3,6 +3,7 @@
 
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/tetrahedralize_with_tetgen.h>
+#include <CGAL/Distortion_optimization/untangle.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/minimize_distortion.h>
 
@@ -22,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -273,6 +275,44 @@ TEST(TetrahedralMeshes, FreeBoundaryRunKeepsTheBoundarySurfaceEmbedded)
     EXPECT_EQ(r.inverted_cells, 0u);
     EXPECT_EQ(inverted(c3t3, storage), 0u);
     EXPECT_EQ(crossings(storage), 0u) << threads << " threads";
+  }
+}
+
+TEST(TetrahedralMeshes, TangledCubeWithAFixedBoundaryIsUntangledThenOptimized)
+{
+  // A TetGen cube, boundary fixed at the identity, interior vertices moved at random by about the
+  // edge length: hundreds of inverted tetrahedra.
+  const C3t3 c3t3 = tetgen_cube_complex(0.01);
+  const auto boundary = boundary_vertices(c3t3);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.25, 0.25);
+  Target_storage start;
+  DO::map_vertices(c3t3, Target_map(start), [](const Point_3& p) { return p; });
+  for(auto& [v, p] : start)
+    if(!boundary.count(v)) p = Point_3(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+  const std::size_t tangled = inverted(c3t3, start);
+  ASSERT_GT(tangled, 50u);
+  for(int threads : {1, 2}) {
+    Target_storage storage = start;
+    std::unordered_set<Vertex_handle> written;
+    const DO::Untangle_result r = DO::untangle(c3t3, Recording_map{&storage, &written},
+                                               DO::parameters::number_of_threads(threads));
+    EXPECT_EQ(r.inverted_before, tangled);
+    EXPECT_EQ(r.inverted_after, 0u);
+    EXPECT_EQ(inverted(c3t3, storage), 0u) << threads << " threads";
+    for(Vertex_handle v : boundary) {
+      EXPECT_EQ(written.count(v), 0u);
+      EXPECT_EQ(storage.at(v), start.at(v));
+    }
+    // Through minimize_distortion: untangled, then optimized for the conformal dilatation.
+    storage = start;
+    const DO::Result m = CGAL::minimize_distortion(c3t3, Target_map(storage), DO::Conformal_dilatation(),
+      DO::parameters::untangle_first(true, DO::parameters::number_of_threads(threads)).number_of_iterations(30));
+    EXPECT_EQ(m.inverted_start_cells, tangled);
+    EXPECT_EQ(m.inverted_cells, 0u);
+    EXPECT_EQ(inverted(c3t3, storage), 0u);
+    EXPECT_TRUE(std::isfinite(m.final_energy));
+    for(Vertex_handle v : boundary) EXPECT_EQ(storage.at(v), start.at(v));
   }
 }
 

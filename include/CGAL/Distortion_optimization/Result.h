@@ -20,10 +20,24 @@ struct Result
   double final_energy = 0;                   ///< energy of the returned map
   std::vector<double> energy_per_iteration;  ///< energy after each iteration (sweep)
   std::size_t iterations = 0;                ///< iterations (sweeps over the free vertices) done
-  double seconds = 0;                        ///< wall-clock time of the optimization
+  double seconds = 0;                        ///< wall-clock time of the optimization, untangling included
   std::size_t inverted_cells = 0;            ///< inverted or flat cells of the returned map (exact predicate)
   bool converged = false;                    ///< the relative energy decrease fell below the threshold
   bool stopped_by_visitor = false;           ///< the visitor returned false
+  std::size_t inverted_start_cells = 0;      ///< inverted or flat cells of the start map
+  std::size_t untangle_iterations = 0;       ///< rounds of untangling (with `untangle_first`), 0 if none was needed
+  double untangle_seconds = 0;               ///< wall-clock time of the untangling
+};
+
+/// \ingroup PkgDistortionOptimizationRef
+/// What `Distortion_optimization::untangle()` returns.
+struct Untangle_result
+{
+  std::size_t inverted_before = 0;  ///< inverted or flat cells of the start map (exact predicate)
+  std::size_t inverted_after = 0;   ///< the same in the returned map: 0 unless the visitor stopped the run
+  std::size_t iterations = 0;       ///< rounds of the barrier's decreasing eps
+  double seconds = 0;               ///< wall-clock time
+  bool stopped_by_visitor = false;  ///< the visitor returned false
 };
 
 } // namespace Distortion_optimization

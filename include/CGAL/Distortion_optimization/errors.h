@@ -22,6 +22,16 @@ public:
   explicit Invalid_input(const std::string& what) : std::invalid_argument(what) {}
 };
 
+/// \ingroup PkgDistortionOptimizationRef
+/// The `Invalid_input` thrown when `preserve_global_injectivity` is asked for a start map whose
+/// boundary already crosses itself: the guard cannot keep what the start does not have (a caller
+/// may then run without it).
+class Crossing_start_boundary : public Invalid_input
+{
+public:
+  explicit Crossing_start_boundary(const std::string& what) : Invalid_input(what) {}
+};
+
 } // namespace Distortion_optimization
 } // namespace CGAL
 

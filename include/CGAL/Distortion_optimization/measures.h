@@ -362,6 +362,70 @@ struct Dirichlet : measures_internal::Unbounded_measure
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
+/// The untangling barrier of Garanzha, Kaporin, Kudryavtseva, Protais, Ray and Sokolov,
+/// "Foldover-free maps in 50 lines of code" (SIGGRAPH 2021). With D = det J / `reference_det`, the
+/// Jacobian's determinant relative to the map's typical one, and chi(D) = (D + sqrt(eps^2 + D^2)) / 2,
+/// a positive and increasing stand-in for D,
+///   F = (1 - theta) |J|^2 / (reference_det chi)^{2/n} + theta (D^2 + 1) / chi
+/// (a regularized MIPS plus a regularized D + 1/D). It is finite and smooth on every cell, inverted
+/// ones included (not normalized), and as eps -> 0 it grows without bound on inverted cells while it
+/// stays bounded on positive ones: minimizing it for decreasing eps unfolds a map
+/// (`Distortion_optimization::untangle()`). `theta` defaults to the paper's 1/128 in 2D, 1/2 in 3D.
+struct Untangling_barrier : measures_internal::Unbounded_measure
+{
+  double epsilon = 1;
+  double reference_det = 1;
+  double theta_2 = 1. / 128, theta_3 = 0.5;
+
+  std::string name() const { return "untangling_barrier"; }
+
+  template <int n, class T>
+  T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
+  {
+    constexpr double k = 2. / n;
+    const double theta = n == 2 ? theta_2 : theta_3, r = 1. / reference_det, rk = n == 2 ? r : std::cbrt(r * r);
+    const T D = r * I.det, N = rk * I.norm2, e2 = lanes::broadcast<T>(epsilon * epsilon);
+    const T root = lanes::sqrt(e2 + D * D);
+    const T chi = D > 0. ? 0.5 * (D + root) : e2 / (2. * (root - D));   // no cancellation on either side
+    const T chi_k = n == 2 ? chi : lanes::cbrt(chi) * lanes::cbrt(chi);
+    const T f = N / chi_k, g = (D * D + 1.) / chi, dchi = chi / root;
+    if(dI)
+      *dI = {((1 - theta) * rk) / chi_k, T{},
+             r * ((-(1 - theta) * k) * f * dchi / chi + theta * (2. * D - g * dchi) / chi)};
+    return (1 - theta) * f + theta * g;
+  }
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    return value_of_invariants<n, double>({s.squaredNorm(), 0., s.prod()}, nullptr);
+  }
+  // The isotropic part of the barrier's Hessian in J, (1 - theta) / chi^(2/n) (relative units):
+  // Garanzha et al.'s shape term weighs each cell's Dirichlet energy by it, so the global step's
+  // reweighted Laplacian is that term's exact Hessian up to rank-one corrections.
+  template <int n>
+  double laplacian_weight(const Singular_values<n>& s) const
+  {
+    const double r = 1. / reference_det, D = r * s.prod(), e2 = epsilon * epsilon, root = std::sqrt(e2 + D * D);
+    const double chi = D > 0 ? 0.5 * (D + root) : e2 / (2 * (root - D));
+    return (1 - (n == 2 ? theta_2 : theta_3)) * (n == 2 ? r / chi : std::cbrt(r * r / (chi * chi)));
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    Jacobian_invariants<double> d;
+    value_of_invariants<n, double>({s.squaredNorm(), 0., s.prod()}, &d);
+    Singular_values<n> g;
+    for(int i = 0; i < n; ++i) {
+      double others = 1;   // d det / d s_i
+      for(int j = 0; j < n; ++j)
+        if(j != i) others *= s[j];
+      g[i] = 2 * s[i] * d.norm2 + others * d.det;
+    }
+    return g;
+  }
+};
+
+/// \ingroup PkgDistortionOptimizationMeasures
 /// Product of two measures, e.g. K * C (the paper's Fig. 9). Normalized / symmetric when both are.
 template <class A, class B>
 struct Product : measures_internal::Pair_of_measures<A, B>

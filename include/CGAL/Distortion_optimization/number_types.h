@@ -74,6 +74,15 @@ bool any_nonzero(const T& x)
   return false;
 }
 
+/// The square root of each lane.
+template <class T>
+T sqrt(const T& x)
+{
+  T r = x;
+  for(int i = 0; i < count<T>; ++i) set(r, i, std::sqrt(get(x, i)));
+  return r;
+}
+
 /// The cube root of each lane (no SIMD instruction computes it).
 template <class T>
 T cbrt(const T& x)

@@ -71,6 +71,7 @@ enum vertex_order_t { vertex_order };
 enum number_of_threads_t { number_of_threads };
 enum parallel_sweep_t { parallel_sweep };
 enum preserve_global_injectivity_t { preserve_global_injectivity };
+enum untangle_first_t { untangle_first };
 } // namespace internal_np
 
 namespace parameters {
@@ -119,6 +120,11 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_swee
 /// boundary must not intersect itself. Default `false` (with a fixed boundary there is nothing to
 /// guard).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(preserve_global_injectivity_t, preserve_global_injectivity)
+
+/// `bool`: when the start map has inverted or flat cells, untangle it first
+/// (`Distortion_optimization::untangle()`), then minimize the measure from the untangled map.
+/// Default `false`: such a start is an error under a normalized measure.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(untangle_first_t, untangle_first)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 

@@ -155,6 +155,7 @@ private:
   double max_step(const std::vector<Vec>& direction, double bound) const
   {
     const std::vector<std::uint32_t>& moving = system_.moving_cells();
+    if(!state_.keeps_valid_cells()) return bound;
     const auto cell_bound = [&](std::size_t i) {
       const std::uint32_t c = moving[i];
       if(!state_.is_valid(c)) return bound;

@@ -111,6 +111,7 @@ private:
   double max_step(std::size_t v, const Vec& d) const
   {
     double t_max = infinity;
+    if(!state_.keeps_valid_cells()) return t_max;
     for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k) {
       const Incidence& in = p_.ring[k];
       if(!state_.is_valid(in.cell)) continue;

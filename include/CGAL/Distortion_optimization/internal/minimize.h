@@ -35,6 +35,77 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
+// The steps on one state and the iteration of the schedule that runs them: a sweep of local
+// steps, a global step, or both. Sets up the boundary guard where it has work (throws
+// Invalid_input if the start's boundary crosses itself).
+template <class State>
+class Steps
+{
+  static constexpr int n = State::dimension;
+
+public:
+  Steps(State& state, Optimization_problem<n>& problem, const Options& options, const Workers& workers)
+    : problem_(problem), options_(options), workers_(workers), free_(free_vertices(problem)),
+      local_step_(state, options.solver)
+  {
+    // The guard, only where it has work: some free vertex on the boundary. Those vertices share
+    // the guard, so a parallel sweep optimizes them one at a time: with Algorithm 3's interface,
+    // or after the independent sets.
+    if(options.global_injectivity)
+      guard_ = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
+                                                   problem.number_of_vertices());
+    for(std::uint32_t v : free_)
+      (guard_ && guard_->is_on_boundary(v) ? guarded_vertices_ : parallel_vertices_).push_back(v);
+    if(guarded_vertices_.empty()) {
+      guard_.reset();
+    } else {
+      if(!guard_->is_injective(problem.map.target))
+        throw Crossing_start_boundary("the boundary of the start map intersects itself: global injectivity cannot be preserved");
+      guard_->rebuild(problem.map.target);
+      state.set_boundary_guard(guard_.get());
+    }
+    if(options.schedule != Schedule::LOCAL || options.harmonic_start)
+      global_step_ = std::make_unique<Global_step<State>>(state);
+  }
+
+  // Returns true if the map changed.
+  bool harmonic_start() { return global_step_ && global_step_->harmonic_start(); }
+
+  void iterate()
+  {
+    if(options_.schedule != Schedule::GLOBAL) sweep();
+    if(options_.schedule != Schedule::LOCAL) global_step_->step();
+  }
+
+private:
+  // One thread: the sequential sweep (Algorithm 2, in the chosen order). More: independent sets or
+  // Algorithm 3 (both in the sorted order), set up at the first sweep (after the harmonic start,
+  // which moves the map the partition is cut from).
+  void sweep()
+  {
+    if(workers_.threads() == 1) return sequential_sweep(local_step_, free_, options_.order);
+    if(options_.parallel_sweep == Parallel_sweep::PARTITION) {
+      if(partition_.parts.empty())
+        partition_ = partition_vertices(problem_, workers_.threads(), parallel_vertices_, guarded_vertices_);
+      return partitioned_sweep(local_step_, partition_, workers_);
+    }
+    if(sets_.empty()) sets_ = independent_sets(problem_, parallel_vertices_);
+    independent_set_sweep(local_step_, sets_, workers_);
+    sorted_sweep(local_step_, guarded_vertices_);
+  }
+
+  const Optimization_problem<n>& problem_;
+  const Options& options_;
+  const Workers& workers_;
+  const std::vector<std::uint32_t> free_;
+  std::vector<std::uint32_t> parallel_vertices_, guarded_vertices_;
+  std::unique_ptr<Boundary_guard<n>> guard_;
+  Local_step<State> local_step_;
+  std::unique_ptr<Global_step<State>> global_step_;
+  std::vector<std::vector<std::uint32_t>> sets_;
+  Vertex_partition partition_;
+};
+
 // Minimizes in place the target positions of problem.map; throws Invalid_input for a start the
 // measure cannot be evaluated on. The traits' orientation predicates decide which cells are valid.
 template <int n, class Measure, class GeomTraits>
@@ -44,63 +115,21 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   const Workers workers(options.threads);
   using State = Optimizer_state<n, Measure, GeomTraits>;
   State state(problem, measure, traits, workers);
-
-  // The guard, only where it has work: some free vertex on the boundary. Those vertices share the
-  // guard, so a parallel sweep optimizes them one at a time: with Algorithm 3's interface, or after
-  // the independent sets.
-  std::unique_ptr<Boundary_guard<n>> guard;
-  if(options.global_injectivity)
-    guard = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
-                                                problem.number_of_vertices());
-  const std::vector<std::uint32_t> free = free_vertices(problem);
-  std::vector<std::uint32_t> parallel_vertices, guarded_vertices;
-  for(std::uint32_t v : free)
-    (guard && guard->is_on_boundary(v) ? guarded_vertices : parallel_vertices).push_back(v);
-  if(guarded_vertices.empty()) {
-    guard.reset();
-  } else {
-    if(!guard->is_injective(problem.map.target))
-      throw Invalid_input("the boundary of the start map intersects itself: global injectivity cannot be preserved");
-    guard->rebuild(problem.map.target);
-    state.set_boundary_guard(guard.get());
-  }
+  Steps<State> steps(state, problem, options, workers);
 
   Result result;
+  result.inverted_start_cells = state.number_of_inverted_cells();
   const double normalization = problem.total_weight > 0 ? 1. / problem.total_weight : 0.;
   double energy = state.energy() * normalization;
   result.initial_energy = energy;
   // A normalized measure is >= its value on rigid maps: measure progress against what is above it.
   const double floor = measure.is_normalized() ? value_on_rigid_maps<n>(measure) : 0.;
-
-  // The steps, each on the state alone.
-  const bool local = options.schedule != Schedule::GLOBAL, global = options.schedule != Schedule::LOCAL;
-  Local_step<State> local_step(state, options.solver);
-  std::unique_ptr<Global_step<State>> global_step;
-  if(global || options.harmonic_start) {
-    global_step = std::make_unique<Global_step<State>>(state);
-    if(options.harmonic_start && global_step->harmonic_start())
-      energy = std::min(energy, state.energy() * normalization);
-  }
-  // One thread: the sequential sweep (Algorithm 2, in the chosen order). More: independent sets or
-  // Algorithm 3 (both in the sorted order), set up at the first sweep (after the harmonic start,
-  // which moves the map the partition is cut from).
-  std::vector<std::vector<std::uint32_t>> sets;
-  Vertex_partition partition;
-  const auto sweep = [&] {
-    if(workers.threads() == 1) return sequential_sweep(local_step, free, options.order);
-    if(options.parallel_sweep == Parallel_sweep::PARTITION) {
-      if(partition.parts.empty()) partition = partition_vertices(problem, workers.threads(), parallel_vertices, guarded_vertices);
-      return partitioned_sweep(local_step, partition, workers);
-    }
-    if(sets.empty()) sets = independent_sets(problem, parallel_vertices);
-    independent_set_sweep(local_step, sets, workers);
-    sorted_sweep(local_step, guarded_vertices);
-  };
+  if(options.harmonic_start && steps.harmonic_start())
+    energy = std::min(energy, state.energy() * normalization);
 
   // The schedule (Algorithm 1).
   while(result.iterations < options.iterations) {
-    if(local) sweep();
-    if(global) global_step->step();
+    steps.iterate();
     ++result.iterations;
     const double previous = energy;
     // Every accepted move decreases the exact energy; a recomputed sum can still exceed the last
@@ -123,16 +152,6 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   result.final_energy = energy;
   result.inverted_cells = state.number_of_inverted_cells();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
-}
-
-// minimize_distortion() on any adapter: the problem, Algorithm 1, and the free targets written back.
-template <class Adapter, class TargetMap, class Measure, class NamedParameters>
-Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measure, const NamedParameters& np)
-{
-  Optimization_problem<Adapter::dimension> problem = make_problem(adapter, np);
-  const Result result = minimize(problem, measure, adapter.traits, read_options(np));
-  adapter.write_targets(target, problem.map.target, problem.is_free);
   return result;
 }
 

@@ -39,6 +39,7 @@ struct Options
   int threads = 1;
   Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
   std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
+  bool untangle_first = false;
 };
 
 template <class NamedParameters>
@@ -57,6 +58,7 @@ Options read_options(const NamedParameters& np)
   o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
   o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
                                       o.schedule != Schedule::LOCAL);
+  o.untangle_first = choose_parameter(get_parameter(np, internal_np::untangle_first), o.untangle_first);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
     o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };

@@ -42,21 +42,30 @@ public:
   // The start's cell values and orientations are computed on the workers. Throws Invalid_input
   // where the measure cannot be evaluated on the start map (NaN, or +inf: an inverted or flat
   // cell under a normalized measure).
+  // With keep_valid_cells false (untangling), a trial may flip valid cells too: only the energy
+  // and the check decide.
   Optimizer_state(Optimization_problem<n>& problem, const Measure& measure, const GeomTraits& traits,
-                  const Workers& workers)
-    : p_(problem), measure_(measure), traits_(traits), workers_(workers),
+                  const Workers& workers, bool keep_valid_cells = true)
+    : p_(problem), measure_(measure), traits_(traits), workers_(workers), keep_valid_(keep_valid_cells),
       value_(problem.map.number_of_cells()), valid_(problem.map.number_of_cells())
   {
-    workers.for_each_block(value_.size(), 1024, [&](std::size_t first, std::size_t size) {
+    workers.for_each(valid_.size(), 1024, [&](std::size_t c) { valid_[c] = !is_inverted(p_.map, c, traits_); });
+    refresh();
+  }
+
+  // The cell values, again after the measure changed (e.g. the untangling barrier's eps); throws
+  // as the constructor.
+  void refresh()
+  {
+    workers_.for_each_block(value_.size(), 1024, [&](std::size_t first, std::size_t size) {
       cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return first + i; }, &value_[first]);
-      for(std::size_t c = first; c < first + size; ++c) valid_[c] = !is_inverted(p_.map, c, traits_);
     });
     for(std::size_t c = 0; c < value_.size(); ++c) {
       if(std::isnan(value_[c]))
         throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number");
       if(!std::isfinite(value_[c]))
         throw Invalid_input("cell " + std::to_string(c) + " of the start map is inverted or degenerate, and the "
-                            "measure '" + measure.name() + "' is infinite there: untangle the map first");
+                            "measure '" + measure_.name() + "' is infinite there: untangle the map first");
     }
   }
 
@@ -69,6 +78,10 @@ public:
   // D(J_c) of the current map, and whether cell c has the orientation of its source.
   double value(std::size_t c) const { return value_[c]; }
   bool is_valid(std::size_t c) const { return valid_[c] != 0; }
+  // Whether trials keep every valid cell valid (the optimizer's guarantee); steps then bound their
+  // moves by the first degeneracy of a valid cell.
+  bool keeps_valid_cells() const { return keep_valid_; }
+  void keep_valid_cells(bool keep) { keep_valid_ = keep; }
   std::size_t number_of_inverted_cells() const
   {
     std::size_t count = 0;
@@ -132,14 +145,15 @@ public:
     const auto commit = [&](std::size_t i) {
       const std::uint32_t c = cell_at(i);
       value_[c] = trial[i];
-      if(!valid_[c]) valid_[c] = !is_inverted(p_.map, c, traits_);
+      if(!valid_[c] || !keep_valid_) valid_[c] = !is_inverted(p_.map, c, traits_);
     };
     double e = e0;
     if(on_workers) e += workers_.sum(count, change);
     else for(std::size_t i = 0; i < count; ++i) e += change(i);
     if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
     bool any_flipped = false;
-    if(on_workers) any_flipped = workers_.reduce(count, false, flipped, [](bool a, bool b) { return a || b; });
+    if(!keep_valid_) {}
+    else if(on_workers) any_flipped = workers_.reduce(count, false, flipped, [](bool a, bool b) { return a || b; });
     else for(std::size_t i = 0; i < count && !any_flipped; ++i) any_flipped = flipped(i);
     if(any_flipped || !check()) return false;
     if(on_workers) workers_.for_each(count, 1024, commit);
@@ -152,6 +166,7 @@ private:
   const Measure& measure_;
   GeomTraits traits_;
   const Workers& workers_;
+  bool keep_valid_;
   std::vector<double> value_;
   std::vector<unsigned char> valid_;
   Boundary_guard<n>* guard_ = nullptr;

@@ -1,0 +1,65 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The bodies of the public functions that change a map, on any adapter (triangle_mesh_adapter.h,
+// c3t3_adapter.h): the problem from the named parameters, the run, and the free vertices' targets
+// written back only once the run succeeded.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_RUN_ON_ADAPTER_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_RUN_ON_ADAPTER_H
+
+#include <CGAL/Distortion_optimization/Result.h>
+#include <CGAL/Distortion_optimization/internal/minimize.h>
+#include <CGAL/Distortion_optimization/internal/named_parameters.h>
+#include <CGAL/Distortion_optimization/internal/untangle.h>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// minimize_distortion(): with untangle_first, an inverted start is untangled first.
+template <class Adapter, class TargetMap, class Measure, class NamedParameters>
+Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measure, const NamedParameters& np)
+{
+  Optimization_problem<Adapter::dimension> problem = make_problem(adapter, np);
+  const Options options = read_options(np);
+  Untangle_report untangled;
+  if(options.untangle_first) {
+    Options untangle_options = options;
+    untangle_options.iterations = 1000;
+    untangle_options.visitor = nullptr;
+    untangled = untangle(problem, adapter.traits, untangle_options);
+  }
+  Result result = minimize(problem, measure, adapter.traits, options);
+  if(untangled.inverted_before > 0) result.inverted_start_cells = untangled.inverted_before;
+  result.untangle_iterations = untangled.iterations;
+  result.untangle_seconds = untangled.seconds;
+  result.seconds += untangled.seconds;
+  adapter.write_targets(target, problem.map.target, problem.is_free);
+  return result;
+}
+
+// untangle(): number_of_iterations bounds the rounds (default 1000).
+template <class Adapter, class TargetMap, class NamedParameters>
+Untangle_result untangle_adapted(Adapter& adapter, TargetMap target, const NamedParameters& np)
+{
+  Optimization_problem<Adapter::dimension> problem = make_problem(adapter, np);
+  Options options = read_options(np);
+  options.iterations = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
+  const Untangle_report report = untangle(problem, adapter.traits, options);
+  adapter.write_targets(target, problem.map.target, problem.is_free);
+  Untangle_result result;
+  result.inverted_before = report.inverted_before;
+  result.inverted_after = report.inverted_after;
+  result.iterations = report.iterations;
+  result.seconds = report.seconds;
+  result.stopped_by_visitor = report.stopped_by_visitor;
+  return result;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_RUN_ON_ADAPTER_H

@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Untangling: from a start with inverted or flat cells to a map whose every cell has its source's
+// orientation, by the method of Garanzha, Kaporin, Kudryavtseva, Protais, Ray and Sokolov,
+// "Foldover-free maps in 50 lines of code" (SIGGRAPH 2021): minimize the barrier F_eps of
+// measures.h (Untangling_barrier) for a decreasing eps. Their eps rule: after each round, with E
+// and E_prev the energies after and before it and D- the smallest relative determinant,
+// sigma = max(1 - E / E_prev, 0.1), mu = (1 - sigma) chi(D-, eps), and the new eps makes
+// chi(D-, eps) = mu, i.e. eps = 2 sqrt(mu (mu - D-)) while D- < mu; so the worst cell's stand-in
+// determinant shrinks by at least 10% a round, faster when the round gained much.
+//
+// Unlike their L-BFGS, each round here is a few iterations of the package's own steps on the
+// package's own state, so every guarantee of the optimizer holds throughout: a cell that is valid
+// (positive, exact predicate) is never flipped or flattened, the set of valid cells only grows,
+// constrained vertices never move, and with the boundary guard the boundary never starts crossing
+// itself. The run stops as soon as every cell is valid; the regular measure takes over from there.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/internal/minimize.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+struct Untangle_report
+{
+  std::size_t inverted_before = 0, inverted_after = 0, iterations = 0;
+  double seconds = 0;
+  bool stopped_by_visitor = false;
+};
+
+// det J_c of every cell (positive when the image keeps the source's orientation), in parallel.
+
+template <int n>
+double smallest_jacobian_determinant(const Simplicial_map<n>& map, const Workers& workers)
+{
+  return workers.reduce(map.number_of_cells(), infinity, [&](std::size_t c) {
+    return map.target_edges(c).determinant() * map.inverse_rest[c].determinant();
+  }, [](double a, double b) { return std::min(a, b); });
+}
+
+// The map's typical det J: the ratio of its signed volume to the source's, or, for a map that is
+// mostly inverted, the mean |det J|; the barrier measures determinants relative to it.
+template <int n>
+double typical_jacobian_determinant(const Simplicial_map<n>& map)
+{
+  double signed_sum = 0, absolute_sum = 0, volume = 0;
+  for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
+    const double det = map.target_edges(c).determinant() * map.inverse_rest[c].determinant();
+    signed_sum += map.rest_volume[c] * det;
+    absolute_sum += map.rest_volume[c] * std::abs(det);
+    volume += map.rest_volume[c];
+  }
+  const double typical = signed_sum > 0 ? signed_sum / volume : absolute_sum / volume;
+  return std::isfinite(typical) && typical > 0 ? typical : 1.;
+}
+
+// Untangles problem.map in place. options.iterations bounds the rounds (values of eps); a round
+// runs the schedule's iterations until one gains less than 1e-5 of the barrier, at most 200; the
+// visitor is called after each round with the round and the number of cells still inverted, and
+// may stop the run there. Throws Invalid_input, with the map unchanged, when some inverted cell
+// has only constrained vertices, or when the rounds end with inverted cells (no injective map may
+// exist with these constraints).
+template <int n, class GeomTraits>
+Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, Options options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const Workers workers(options.threads);
+  Untangling_barrier barrier;
+  barrier.reference_det = typical_jacobian_determinant(problem.map);
+  using State = Optimizer_state<n, Untangling_barrier, GeomTraits>;
+  // First as Garanzha et al.: only the barrier keeps cells from folding, so that a fold can open
+  // through flat states. Once eps is at its floor, no valid cell may flip any more (the optimizer's
+  // own guarantee), so that the count of inverted cells only falls.
+  State state(problem, barrier, traits, workers, false);
+  Untangle_report report;
+  report.inverted_before = report.inverted_after = state.number_of_inverted_cells();
+  if(report.inverted_before == 0) return report;
+  for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c) {
+    bool moves = false;
+    for(auto v : problem.map.cells[c]) moves = moves || problem.is_free[v];
+    if(!moves && !state.is_valid(c))
+      throw Invalid_input("cell " + std::to_string(c) + " is inverted or flat and all its vertices are constrained: "
+                          "no map with these constraints is injective");
+  }
+  const std::vector<Vector<n>> start_targets = problem.map.target;
+  options.harmonic_start = false;
+  Steps<State> steps(state, problem, options, workers);
+
+  // eps is relative to the typical determinant, as D- below; the floor is the paper's.
+  const double floor = n == 2 ? 1e-9 : 1e-10;
+  std::size_t rounds_without_progress = 0;
+  while(report.iterations < options.iterations) {
+    ++report.iterations;
+    const double before = state.energy();
+    const std::size_t inverted_before = state.number_of_inverted_cells();
+    double energy = before;
+    for(int k = 0; k < 200; ++k) {
+      const double previous = energy;
+      steps.iterate();
+      energy = state.energy();
+      if(state.number_of_inverted_cells() == 0 || !(previous - energy > 1e-5 * std::abs(previous))) break;
+    }
+    report.inverted_after = state.number_of_inverted_cells();
+    if(options.visitor && !options.visitor(report.iterations, static_cast<double>(report.inverted_after))) {
+      report.stopped_by_visitor = true;
+      break;
+    }
+    if(report.inverted_after == 0) break;
+    // The paper's eps rule, on determinants relative to the typical one; our rounds converge less
+    // far than their L-BFGS, so eps falls at most tenfold a round (a faster fall collapses folds
+    // into flat strips that no later round opens).
+    const double worst = smallest_jacobian_determinant(problem.map, workers) / barrier.reference_det;
+    const double e = barrier.epsilon, root = std::sqrt(e * e + worst * worst);
+    const double chi = worst > 0 ? 0.5 * (worst + root) : e * e / (2 * (root - worst));
+    const double sigma = std::max(before > 0 ? 1 - energy / before : 0., 0.1), mu = (1 - sigma) * chi;
+    barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
+    if(barrier.epsilon <= floor) state.keep_valid_cells(true);
+    state.refresh();
+    // Stuck: eps at its floor and no cell untangled for a while.
+    rounds_without_progress = barrier.epsilon <= floor && report.inverted_after >= inverted_before ? rounds_without_progress + 1 : 0;
+    if(rounds_without_progress >= 20) break;
+  }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if(report.inverted_after > 0 && !report.stopped_by_visitor) {
+    const std::size_t still = report.inverted_after;
+    problem.map.target = start_targets;
+    throw Invalid_input("untangling failed: " + std::to_string(still) + " of " + std::to_string(report.inverted_before) +
+                        " inverted or flat cells remain after " + std::to_string(report.iterations) +
+                        " rounds; the constraints may admit no injective map");
+  }
+  return report;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H

@@ -1,0 +1,135 @@
+// untangle() and minimize_distortion(untangle_first) on CGAL::Surface_mesh: tangled grids with
+// fixed boundaries, constraints kept to the bit, and starts with no injective map.
+
+#include "test_meshes.h"
+
+#include <CGAL/Distortion_optimization/untangle.h>
+#include <CGAL/minimize_distortion.h>
+
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace test_meshes;
+
+namespace {
+
+using UV = Mesh2::Property_map<Mesh2::Vertex_index, Point_2>;
+
+// A 16 x 16 grid whose border is the identity and whose interior vertices moved by up to `noise`
+// (the spacing is 1/16): many triangles inverted.
+struct Tangled_grid
+{
+  Mesh2 mesh = planar_grid(16);
+  UV uv = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:uv").first;
+  explicit Tangled_grid(double noise, unsigned seed)
+  {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-noise, noise);
+    for(auto v : mesh.vertices()) {
+      const Point_2 p = mesh.point(v);
+      uv[v] = mesh.is_border(v) ? p : Point_2(p.x() + u(rng), p.y() + u(rng));
+    }
+  }
+  std::vector<Point_2> targets() const
+  {
+    std::vector<Point_2> t;
+    for(auto v : mesh.vertices()) t.push_back(uv[v]);
+    return t;
+  }
+};
+
+} // namespace
+
+TEST(Untangle, TangledGridsWithAFixedBoundaryBecomeInjective)
+{
+  for(unsigned seed : {1u, 2u, 3u}) {
+    Tangled_grid g(0.15, seed);
+    // The border and every 9th interior vertex (put back at its source) are constrained: they keep
+    // their targets to the bit.
+    auto fixed = g.mesh.add_property_map<Mesh2::Vertex_index, bool>("v:fixed", false).first;
+    std::size_t i = 0;
+    for(auto v : g.mesh.vertices()) {
+      fixed[v] = g.mesh.is_border(v) || i++ % 9 == 0;
+      if(fixed[v]) g.uv[v] = g.mesh.point(v);
+    }
+    const std::size_t tangled = count_flipped(g.mesh, g.uv);
+    ASSERT_GT(tangled, 20u) << seed;
+    const std::vector<Point_2> start = g.targets();
+    std::vector<double> inverted_per_round;
+    const DO::Untangle_result r = DO::untangle(g.mesh, g.uv, CGAL::parameters::vertex_is_constrained_map(fixed)
+      .visitor([&](std::size_t, double inverted) { inverted_per_round.push_back(inverted); return true; }));
+    EXPECT_EQ(r.inverted_before, tangled) << seed;
+    EXPECT_EQ(r.inverted_after, 0u) << seed;
+    EXPECT_EQ(count_flipped(g.mesh, g.uv), 0u) << seed;
+    EXPECT_EQ(inverted_per_round.size(), r.iterations);
+    EXPECT_EQ(inverted_per_round.back(), 0.);
+    for(auto v : g.mesh.vertices())
+      if(fixed[v]) { EXPECT_EQ(g.uv[v], start[v.idx()]) << seed; }
+
+    // The same start through minimize_distortion: untangled, then optimized.
+    for(auto v : g.mesh.vertices()) g.uv[v] = start[v.idx()];
+    const DO::Result m = CGAL::minimize_distortion(g.mesh, g.uv, DO::Symmetric_dirichlet(),
+      DO::parameters::untangle_first(true, CGAL::parameters::vertex_is_constrained_map(fixed)));
+    EXPECT_EQ(m.inverted_start_cells, tangled);
+    EXPECT_GT(m.untangle_iterations, 0u);
+    EXPECT_EQ(m.inverted_cells, 0u);
+    EXPECT_EQ(count_flipped(g.mesh, g.uv), 0u);
+    EXPECT_TRUE(std::isfinite(m.final_energy));
+    EXPECT_LE(m.final_energy, m.initial_energy);
+    EXPECT_NEAR(brute_force_energy(g.mesh, g.uv, "symmetric_dirichlet"), m.final_energy, 1e-9 * m.final_energy);
+    for(auto v : g.mesh.vertices())
+      if(fixed[v]) { EXPECT_EQ(g.uv[v], start[v.idx()]) << seed; }
+  }
+}
+
+TEST(Untangle, AnInjectiveStartIsLeftAsItIs)
+{
+  Tangled_grid g(0.01, 4);
+  ASSERT_EQ(count_flipped(g.mesh, g.uv), 0u);
+  const std::vector<Point_2> start = g.targets();
+  const DO::Untangle_result r = DO::untangle(g.mesh, g.uv);
+  EXPECT_EQ(r.inverted_before, 0u);
+  EXPECT_EQ(r.iterations, 0u);
+  EXPECT_EQ(g.targets(), start);
+}
+
+TEST(Untangle, NoInjectiveMapGivesAnErrorAndLeavesTheMapUnchanged)
+{
+  // The border fixed, and the middle vertex fixed outside it: an orientation-preserving map with
+  // this border covers the square exactly once, so none has a vertex outside.
+  Tangled_grid outside(0., 1);
+  auto center = outside.mesh.add_property_map<Mesh2::Vertex_index, bool>("v:center", false).first;
+  const Mesh2::Vertex_index middle(8 * 17 + 8);
+  for(auto v : outside.mesh.vertices()) center[v] = outside.mesh.is_border(v) || v == middle;
+  outside.uv[middle] = Point_2(3, 0.5);
+  // An inverted triangle whose three vertices are constrained: one vertex reflected through the
+  // midpoint of the opposite edge.
+  Tangled_grid pinned(0., 1);
+  auto fixed = pinned.mesh.add_property_map<Mesh2::Vertex_index, bool>("v:fixed", false).first;
+  const auto h = pinned.mesh.halfedge(Mesh2::Face_index(100));
+  const auto a = pinned.mesh.source(h), b = pinned.mesh.target(h), c = pinned.mesh.target(pinned.mesh.next(h));
+  for(auto v : {a, b, c}) fixed[v] = true;
+  pinned.uv[c] = Point_2(pinned.uv[a].x() + pinned.uv[b].x() - pinned.uv[c].x(),
+                         pinned.uv[a].y() + pinned.uv[b].y() - pinned.uv[c].y());
+  for(Tangled_grid* g : {&outside, &pinned}) {
+    const std::size_t tangled = count_flipped(g->mesh, g->uv);
+    ASSERT_GT(tangled, 0u);
+    const std::vector<Point_2> start = g->targets();
+    try {
+      if(g == &outside) DO::untangle(g->mesh, g->uv, CGAL::parameters::vertex_is_constrained_map(center));
+      else DO::untangle(g->mesh, g->uv, CGAL::parameters::vertex_is_constrained_map(fixed));
+      ADD_FAILURE() << "no injective map exists, yet untangle() returned";
+    } catch(const DO::Invalid_input& e) {
+      const std::string what = e.what();
+      if(g == &outside) {
+        EXPECT_NE(what.find("untangling failed"), std::string::npos) << what;
+        EXPECT_NE(what.find(" remain"), std::string::npos) << what;
+      } else {
+        EXPECT_NE(what.find("all its vertices are constrained"), std::string::npos) << what;
+      }
+    }
+    EXPECT_EQ(g->targets(), start);
+  }
+}
