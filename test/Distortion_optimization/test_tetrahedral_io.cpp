@@ -1,13 +1,20 @@
-// Tetrahedral mesh files: the strict Medit reader, the Medit writer and the VTU writer.
+// Mesh files: the strict Medit reader, the Medit writer and the VTU writer, and what the OFF,
+// OBJ and Medit readers share (bounded lines and reserves, nothing left unread, clear messages).
 
 #include <CGAL/Distortion_optimization/IO/medit.h>
+#include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
+#include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <streambuf>
 #include <string>
@@ -36,22 +43,37 @@ IO::Tetrahedron_soup read(const std::string& text, const std::string& name = "ba
   return IO::read_MEDIT(in, name);
 }
 
-// The message of the Invalid_input thrown by reading `text`, or "" if nothing was thrown.
-std::string error(const std::string& text)
+// The message of the Invalid_input thrown by reading `in` as `format` ("off", "obj" or "mesh"),
+// or "" if nothing was thrown.
+std::string reader_error(std::istream& in, const std::string& format, const std::string& name)
 {
   try {
-    read(text);
+    if(format == "off") IO::read_OFF(in, name);
+    else if(format == "obj") IO::read_OBJ(in, name);
+    else IO::read_MEDIT(in, name);
   } catch(const DO::Invalid_input& e) {
     return e.what();
   }
   return "";
 }
 
-#define EXPECT_REJECTED(text, fragment)                                                          \
-  do {                                                                                           \
-    const std::string message = error(text);                                                     \
-    EXPECT_NE(message.find(fragment), std::string::npos) << "message: '" << message << "'";      \
+// The same for `text`, named "bad.<format>".
+std::string reader_error(const std::string& text, const std::string& format)
+{
+  std::istringstream in(text);
+  return reader_error(in, format, "bad." + format);
+}
+
+// A message cut for printing: a failing reader may quote a whole (huge) line.
+std::string shown(const std::string& message) { return message.substr(0, 300); }
+
+#define EXPECT_READER_REJECTED(format, text, fragment)                                                  \
+  do {                                                                                                  \
+    const std::string message = reader_error(text, format);                                             \
+    EXPECT_NE(message.find(fragment), std::string::npos) << "message: '" << shown(message) << "'";      \
   } while(false)
+
+#define EXPECT_REJECTED(text, fragment) EXPECT_READER_REJECTED("mesh", text, fragment)
 
 // Two tetrahedra sharing the face (1, 2, 3) of a unit corner, with coordinates that need all 17
 // digits to round-trip.
@@ -434,4 +456,247 @@ TEST(Vtu, RejectsBadInputAndWritesNothing)
   EXPECT_EQ(message(s.points, triangles, {}), path + ": triangle 0 has vertex index 7 out of range");
   EXPECT_FALSE(exists(path));
   EXPECT_FALSE(exists(path + ".partial"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// What the OFF, OBJ and Medit readers share
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+// The largest single allocation since it was last reset: a count read from a file must not turn
+// into a large reserve before it is checked, and a reserve costs no resident memory until it is
+// used, so getrusage cannot see it.
+std::atomic<std::size_t> largest_allocation{0};
+
+} // namespace
+
+// Replacing the global operator new is allowed and affects only this test binary. The default
+// operator delete of libstdc++ and libc++ releases with std::free, so it stays.
+void* operator new(std::size_t n)
+{
+  std::size_t seen = largest_allocation.load(std::memory_order_relaxed);
+  while(n > seen && !largest_allocation.compare_exchange_weak(seen, n, std::memory_order_relaxed)) {
+  }
+  if(void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+
+namespace {
+
+using namespace std::string_literals; // for inputs with NUL bytes
+
+long peak_rss_kb()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+// An endless stream of NUL bytes, as /dev/zero, that gives up (end of stream) after `limit`
+// bytes so that a reader without a line bound fails the test instead of filling the memory.
+class Endless_buffer : public std::streambuf
+{
+public:
+  explicit Endless_buffer(std::size_t limit) : limit_(limit), chunk_(4096, '\0') {}
+  std::size_t delivered() const { return delivered_; }
+
+protected:
+  int_type underflow() override
+  {
+    if(delivered_ >= limit_) return traits_type::eof();
+    delivered_ += chunk_.size();
+    setg(&chunk_[0], &chunk_[0], &chunk_[0] + chunk_.size());
+    return traits_type::to_int_type(chunk_[0]);
+  }
+
+private:
+  std::size_t limit_, delivered_ = 0;
+  std::string chunk_;
+};
+
+const std::string triangle_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+const std::string triangle_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+const std::string tetrahedron_mesh = header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nEnd\n";
+
+} // namespace
+
+TEST(Readers, EndlessLineFailsFastWithBoundedMemory)
+{
+  // 64 MB without a line break, written a chunk at a time to keep this process small.
+  const std::string path = temp("endless_line");
+  {
+    std::ofstream out(path, std::ios::binary);
+    const std::string chunk(1 << 20, '1');
+    for(int i = 0; i < 64; ++i) out << chunk;
+  }
+  const long before = peak_rss_kb();
+  for(const std::string format : {"off", "obj", "mesh"}) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string message = reader_error(in, format, path);
+    EXPECT_EQ(message, path + ": line 1 longer than 1048576 bytes") << format << ": " << shown(message);
+  }
+  EXPECT_LT(peak_rss_kb() - before, 32 * 1024) << "peak resident memory grew by more than 32 MB";
+  std::remove(path.c_str());
+}
+
+TEST(Readers, EndlessStreamIsReadNoFurtherThanTheLineBound)
+{
+  // As a link to /dev/zero: the reader stops after the first 1 MiB, whatever follows.
+  for(const std::string format : {"off", "obj", "mesh"}) {
+    Endless_buffer zeros(std::size_t(16) << 20);
+    std::istream in(&zeros);
+    EXPECT_EQ(reader_error(in, format, "zero"), "zero: line 1 longer than 1048576 bytes") << format;
+    EXPECT_LE(zeros.delivered(), (std::size_t(1) << 20) + 4096) << format;
+  }
+  // The bound is on a line, not the file, and a line of exactly 1 MiB is fine.
+  const std::string comment = "#" + std::string((1 << 20) - 1, 'x');
+  EXPECT_EQ(reader_error(comment + "\n" + triangle_off + comment + "\n", "off"), "");
+  EXPECT_EQ(reader_error(comment + "x\n" + triangle_off, "off"), "bad.off: line 1 longer than 1048576 bytes");
+  EXPECT_EQ(reader_error(triangle_obj + comment + "x\n", "obj"), "bad.obj: line 5 longer than 1048576 bytes");
+}
+
+TEST(Readers, HeaderCountsReserveNoMoreThanTheInputCanHold)
+{
+  // 23 bytes announcing 16.7M vertices: the reader must find the file truncated without
+  // reserving room for them.
+  const std::string path = temp("reserve_bomb.off");
+  std::ofstream(path, std::ios::binary) << "OFF\n16777216 1 0\n0 0 0\n";
+  largest_allocation = 0;
+  try {
+    IO::read_triangle_soup(path);
+    ADD_FAILURE() << "no exception";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":3: truncated: 16777216 vertices announced, 1 found");
+  }
+  EXPECT_LT(largest_allocation.load(), std::size_t(1) << 20);
+  std::remove(path.c_str());
+
+  // Through streams that cannot tell their size (pipes), OFF faces and Medit sections alike.
+  const std::pair<std::string, std::string> inputs[] = {
+    {"off", "OFF\n3 16777216 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"}, {"mesh", header + "Vertices 16777216\n0 0 0 1\n"}};
+  for(const auto& input : inputs) {
+    Unseekable_buffer buffer(input.second);
+    std::istream in(&buffer);
+    largest_allocation = 0;
+    const std::string message = reader_error(in, input.first, "pipe");
+    EXPECT_NE(message.find("16777216"), std::string::npos) << message;
+    EXPECT_NE(message.find(" announced, 1 found"), std::string::npos) << message;
+    EXPECT_LT(largest_allocation.load(), std::size_t(1) << 20) << input.first;
+  }
+}
+
+TEST(Off, RejectsAFaceBeyondTheCount)
+{
+  const std::string fewer = "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n";
+  EXPECT_EQ(reader_error(fewer, "off"), "bad.off:11: '3' after the 3 faces the header announces");
+}
+
+TEST(Readers, RejectBytesAfterANul)
+{
+  // The bytes after a NUL were ignored: "0.5\0garbage" read as 0.5, "5\077" as 5.
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 0\n0 0 0\n0.5\0garbage 0 0\n0 1 0\n3 0 1 2\n"s,
+                         "bad.off:4: '0.5\\x00garbage' is not a number");
+  EXPECT_READER_REJECTED("off", "OFF\n3\0" "77 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"s, "bad.off:2: '3\\x0077' is not an integer");
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\0 9\n"s, "bad.off:6: '2\\x00' is not an integer");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\0junk\nv 0 1 0\nf 1 2 3\n"s, "bad.obj:2: '0\\x00junk' is not a number");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\0\n"s, "bad.obj:4: '3\\x00' is not an integer");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv\0 1 0 0\n"s, "bad.obj:2: 'v\\x00' is not an OBJ statement");
+  EXPECT_READER_REJECTED("mesh", header + "Vertices 1\n0 0 0\0x 1\n"s, "bad.mesh:4: '0\\x00x' is not a number");
+  EXPECT_READER_REJECTED("mesh", header + four_vertices + "Triangles 1\n1 2 3\0 0\nTetrahedra 1 1 2 3 4 0\n"s,
+                         "bad.mesh:10: '3\\x00' in Triangles is not a number");
+}
+
+TEST(Readers, RejectTrailingGarbage)
+{
+  EXPECT_READER_REJECTED("off", triangle_off + "garbage\n", "bad.off:7: 'garbage' after the 1 faces the header announces");
+  EXPECT_READER_REJECTED("off", triangle_off + "3 0 1 2\n", "bad.off:7: '3' after the 1 faces");
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 0\n0 0 0 junk\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:3: 'junk' is not a number");
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 red\n", "bad.off:6: 'red' is not a number");
+  EXPECT_READER_REJECTED("obj", triangle_obj + "garbage 1 2\n", "bad.obj:5: 'garbage' is not an OBJ statement");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0 1 junk\n", "bad.obj:1: 'junk' is not a number");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n", "bad.obj:4: 'x' is not an integer");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "bad.obj:4: face vertex '1/1/1/1' has more than three parts");
+  EXPECT_READER_REJECTED("mesh", tetrahedron_mesh + "garbage\n", "bad.mesh:11: 'garbage' after End");
+  EXPECT_READER_REJECTED("mesh", header + four_vertices + "Tetrahedra 1 1 2 3 4 0\ngarbage\n",
+                         "bad.mesh:10: unsupported Medit section 'garbage'");
+  // What the formats allow after the required values stays accepted: colors, w, the other
+  // statements of OBJ, texture and normal indices.
+  EXPECT_EQ(reader_error("OFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0\n0 1 0\n3 0 1 2 0.5 0.5 0.5\n", "off"), "");
+  EXPECT_EQ(reader_error("mtllib a.mtl\no x\nv 0 0 0 1\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\ng g\ns off\nusemtl m\n"
+                         "f 1/1/1 2//1 -1/1\nl 1 2\n", "obj"), "");
+}
+
+TEST(Off, RejectsACountLineWithTheWrongNumberOfFields)
+{
+  EXPECT_READER_REJECTED("off", "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:2: expected 3 counts (vertices, faces, edges), found 2");
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 0 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:2: expected 3 counts (vertices, faces, edges), found 4");
+  EXPECT_READER_REJECTED("off", "OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:1: expected 3 counts (vertices, faces, edges), found 2");
+  EXPECT_READER_REJECTED("off", "OFF 3 1 0 x\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:1: expected 3 counts");
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 x\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:2: 'x' is not an integer");
+  EXPECT_READER_REJECTED("off", "OFF\n3\n", "bad.off:2: missing vertex and face counts");
+  // Both layouts of a correct header.
+  EXPECT_EQ(reader_error("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "off"), "");
+  EXPECT_EQ(reader_error(triangle_off, "off"), "");
+}
+
+TEST(Readers, SkipAUtf8ByteOrderMark)
+{
+  const std::string bom = "\xEF\xBB\xBF";
+  std::istringstream off(bom + triangle_off), obj(bom + triangle_obj), mesh(bom + tetrahedron_mesh);
+  const IO::Triangle_soup from_off = IO::read_OFF(off), from_obj = IO::read_OBJ(obj);
+  EXPECT_EQ(from_off.points.size(), 3u);
+  ASSERT_EQ(from_obj.points.size(), 3u); // the first vertex was dropped
+  EXPECT_EQ(from_obj.points, from_off.points);
+  EXPECT_EQ(from_obj.cells, from_off.cells);
+  EXPECT_EQ(IO::read_MEDIT(mesh).cells.size(), 1u);
+  // Only at the start of the file.
+  EXPECT_READER_REJECTED("obj", triangle_obj + bom + "v 0 0 0\n", "bad.obj:5: '\xEF\xBB\xBFv' is not an OBJ statement");
+}
+
+TEST(Readers, EscapeControlBytesInMessages)
+{
+  // A terminal title and color change where the counts should be.
+  const std::string message = reader_error("OFF\n\x1b]0;PWNED\a\x1b[31mRED 1 0\n", "off");
+  EXPECT_EQ(message, "bad.off:2: '\\x1b]0;PWNED\\x07\\x1b[31mRED' is not an integer");
+  for(char c : message) EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << shown(message);
+  // C1 controls (CSI is U+009B) and bytes that are not UTF-8 too; the rest of UTF-8 is kept.
+  EXPECT_READER_REJECTED("obj", "v 0 0 \xC2\x9B" "31m\n", "bad.obj:1: '\\xc2\\x9b31m' is not a number");
+  EXPECT_READER_REJECTED("obj", "v 0 0 \xFF\x7F\n", "bad.obj:1: '\\xff\\x7f' is not a number");
+  EXPECT_READER_REJECTED("obj", "v 0 0 \xC3\xA9t\xC3\xA9\n", "bad.obj:1: '\xC3\xA9t\xC3\xA9' is not a number");
+  EXPECT_READER_REJECTED("mesh", header + "Vertices\x1b[2J 1\n", "bad.mesh:3: unsupported Medit section 'Vertices\\x1b[2J'");
+  // The file name too.
+  std::istringstream in("OFF\n1 x 0\n");
+  EXPECT_EQ(reader_error(in, "off", "a\rb.off"), "a\\x0db.off:2: 'x' is not an integer");
+}
+
+TEST(Readers, AcceptSubnormalCoordinates)
+{
+  // strtod reports ERANGE for them, yet they are exact doubles (the writers produce them).
+  std::istringstream off("OFF\n3 1 0\n0 0 1e-320\n1 0 0\n0 1 0\n3 0 1 2\n"), obj("v 0 0 1e-320\nv 1 0 0\nv 0 1 -4.9e-324\nf 1 2 3\n"),
+    mesh(header + "Vertices\n4\n0 0 1e-320 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra 1 1 2 3 4 0\n");
+  EXPECT_EQ(IO::read_OFF(off).points[0][2], 1e-320);
+  const IO::Triangle_soup from_obj = IO::read_OBJ(obj);
+  EXPECT_EQ(from_obj.points[0][2], 1e-320);
+  EXPECT_EQ(from_obj.points[2][2], -std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(IO::read_MEDIT(mesh).points[0][2], 1e-320);
+  // Below the smallest subnormal a coordinate rounds to zero; above the largest double it is refused.
+  EXPECT_READER_REJECTED("off", "OFF\n3 1 0\n0 0 1e400\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:3: coordinate '1e400' is not a finite number");
+
+  // What the writers produce, the readers take back, bit for bit.
+  IO::Triangle_soup triangles;
+  triangles.points = {{0, 0, 1e-320}, {1, 0, 0}, {0, 1, std::numeric_limits<double>::denorm_min()}};
+  triangles.cells = {{0, 1, 2}};
+  for(const std::string name : {"subnormal.off", "subnormal.obj"}) {
+    const std::string path = temp(name);
+    IO::write_triangle_soup(path, triangles);
+    EXPECT_EQ(IO::read_triangle_soup(path).points, triangles.points) << name;
+    std::remove(path.c_str());
+  }
+  IO::Tetrahedron_soup tetrahedra = two_tetrahedra();
+  tetrahedra.points[4][2] = 2.5e-315;
+  const std::string path = temp("subnormal.mesh");
+  IO::write_MEDIT(path, tetrahedra);
+  EXPECT_EQ(IO::read_tetrahedron_soup(path).points, tetrahedra.points);
+  std::remove(path.c_str());
 }

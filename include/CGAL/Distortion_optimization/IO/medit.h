@@ -171,12 +171,16 @@ private:
     if(!Token_reader::is_number(v)) tokens_.fail("'" + v + "' in " + section + " is not a number");
   }
 
-  static std::size_t capped(long long n) { return static_cast<std::size_t>(std::min<long long>(n, 1 << 20)); }
+  // Room for `n` entries of a section, no more than the rest of the stream can hold.
+  std::size_t plausible(long long n, int values_per_entry) const
+  {
+    return plausible_reserve(n, tokens_.remaining_bytes(), 2 * values_per_entry);
+  }
 
   void read_vertices()
   {
     const long long n = count("Vertices", 4);
-    soup_.points.reserve(capped(n));
+    soup_.points.reserve(plausible(n, 4));
     for(long long v = 0; v < n; ++v) {
       std::array<double, 3> p;
       for(int i = 0; i < 3; ++i) p[i] = tokens_.coordinate(value("Vertices", n, v));
@@ -189,8 +193,8 @@ private:
   {
     const long long n = count("Tetrahedra", 5);
     const long long nv = static_cast<long long>(soup_.points.size());
-    soup_.cells.reserve(capped(n));
-    soup_.labels.reserve(capped(n));
+    soup_.cells.reserve(plausible(n, 5));
+    soup_.labels.reserve(plausible(n, 5));
     for(long long c = 0; c < n; ++c) {
       std::array<std::size_t, 4> tet;
       for(int i = 0; i < 4; ++i) {
@@ -228,16 +232,18 @@ private:
 /// \ingroup PkgDistortionOptimizationIO
 /// Reads a 3D ASCII Medit mesh: "MeshVersionFormatted v" (1 to 4), "Dimension 3", "Vertices" n
 /// then n entries "x y z ref", "Tetrahedra" n then n entries "a b c d ref" (1-based), and an
-/// optional "End". Keywords are case-insensitive, '#' starts a comment, and values may be spread
-/// over lines in any way. The other sections of the format with a fixed layout (Edges, Triangles,
-/// Quadrilaterals, Prisms, Pyramids, Hexahedra, Corners, Ridges, Required*, Normals, Tangents,
-/// NormalAt*, TangentAt*, EdgesP2, TrianglesP2, QuadrilateralsQ2, AngleOfCornerBound) are checked
-/// and skipped. `name` is used in error messages.
+/// optional "End". Keywords are case-insensitive, '#' starts a comment, values may be spread
+/// over lines in any way, and a UTF-8 byte order mark at the start is skipped. The other
+/// sections of the format with a fixed layout (Edges, Triangles, Quadrilaterals, Prisms,
+/// Pyramids, Hexahedra, Corners, Ridges, Required*, Normals, Tangents, NormalAt*, TangentAt*,
+/// EdgesP2, TrianglesP2, QuadrilateralsQ2, AngleOfCornerBound) are checked and skipped. `name` is
+/// used in error messages.
 /// \throws Invalid_input naming the line for: a missing header, a dimension other than 3, a missing
 /// Vertices or Tetrahedra section, a section the reader does not know, a negative count, a count
-/// larger than the rest of the file can hold, a truncated section, a token that is not a number,
-/// a non-finite coordinate, a vertex index out of range, a tetrahedron repeating a vertex, or
-/// anything after End.
+/// larger than the rest of the file can hold, a line longer than 1 MiB, a truncated section, a
+/// token that is not a number (a NUL byte or other garbage in it included), a non-finite
+/// coordinate, a vertex index out of range, a tetrahedron repeating a vertex, or anything after
+/// End.
 inline Tetrahedron_soup read_MEDIT(std::istream& in, const std::string& name = "MEDIT input")
 {
   return internal::Medit_reader(in, name).read();
@@ -249,11 +255,12 @@ inline Tetrahedron_soup read_MEDIT(std::istream& in, const std::string& name = "
 /// no tetrahedron.
 inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
 {
-  if(internal::extension(path) != "mesh") throw Invalid_input(path + ": unsupported extension (use .mesh)");
+  const std::string shown = internal::printable(path);
+  if(internal::extension(path) != "mesh") throw Invalid_input(shown + ": unsupported extension (use .mesh)");
   std::ifstream in(path, std::ios::binary);
-  if(!in) throw Invalid_input(path + ": cannot open the file");
+  if(!in) throw Invalid_input(shown + ": cannot open the file");
   Tetrahedron_soup soup = read_MEDIT(in, path);
-  if(soup.cells.empty()) throw Invalid_input(path + ": no tetrahedron");
+  if(soup.cells.empty()) throw Invalid_input(shown + ": no tetrahedron");
   return soup;
 }
 

@@ -1,21 +1,24 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// What the strict readers share: a line reader that drops comments and blank lines and names the
-// file and line in every error, a token reader on top of it for formats whose values may be
-// spread over lines (Medit), and the lower-case extension of a path.
+// What the strict readers share: a bounded line reader that drops comments and blank lines and
+// names the file and line in every error, a token reader on top of it for formats whose values
+// may be spread over lines (Medit), strict number parsing, a bound on what a count announced by a
+// file may reserve, the escaping of quoted file content in messages, and the lower-case extension
+// of a path.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_LINE_READER_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_LINE_READER_H
 
 #include <CGAL/Distortion_optimization/errors.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <istream>
-#include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -24,71 +27,107 @@ namespace Distortion_optimization {
 namespace IO {
 namespace internal {
 
-// Reads a stream line by line, dropping comments ('#' to the end of the line) and blank lines,
-// and turns what is left into whitespace-separated tokens; errors name the file and line.
+// The longest line a reader accepts. Far more than any mesh line needs, and small enough that a
+// file without a line break (a link to /dev/zero, a corrupt download) fails at once instead of
+// filling the memory.
+constexpr std::size_t max_line_bytes = std::size_t(1) << 20;
+
+enum class Line_status { line, end_of_stream, too_long };
+
+// Reads the next line of `in` into `line`, without its '\n', keeping at most `max_bytes` bytes:
+// `too_long` as soon as the line has more (the rest of it is left unread). `end_of_stream` (and
+// failbit, as std::getline) when nothing is left. Any reader of a file the user gives should read
+// its lines through this or Line_reader.
+inline Line_status read_bounded_line(std::istream& in, std::string& line, std::size_t max_bytes = max_line_bytes)
+{
+  line.clear();
+  const std::istream::sentry ok(in, true);
+  if(!ok) return Line_status::end_of_stream;
+  std::streambuf& buffer = *in.rdbuf();
+  try {
+    for(bool extracted = false;; extracted = true) {
+      const std::streambuf::int_type c = buffer.sbumpc();
+      if(std::streambuf::traits_type::eq_int_type(c, std::streambuf::traits_type::eof())) {
+        in.setstate(extracted ? std::ios::eofbit : std::ios::eofbit | std::ios::failbit);
+        return extracted ? Line_status::line : Line_status::end_of_stream;
+      }
+      if(c == '\n') return Line_status::line;
+      if(line.size() == max_bytes) return Line_status::too_long;
+      line.push_back(std::streambuf::traits_type::to_char_type(c));
+    }
+  } catch(...) { // as istream does for a throwing buffer
+    in.setstate(std::ios::badbit);
+  }
+  return Line_status::end_of_stream;
+}
+
+// `text` with control bytes (C0, DEL, C1) and bytes that are not UTF-8 written as \xNN, so that
+// a message quoting a file cannot send escape sequences to a terminal.
+inline std::string printable(const std::string& text)
+{
+  auto byte = [&](std::size_t i) { return i < text.size() ? static_cast<unsigned char>(text[i]) : 0u; };
+  auto continuation = [&](std::size_t i, unsigned lo = 0x80, unsigned hi = 0xBF) { return byte(i) >= lo && byte(i) <= hi; };
+  std::string out;
+  out.reserve(text.size());
+  for(std::size_t i = 0; i < text.size();) {
+    const unsigned c = byte(i);
+    // Length of a well-formed UTF-8 sequence starting at i that is not a control character, or 0.
+    std::size_t n = 0;
+    if(c >= 0x20 && c < 0x7F) n = 1;
+    else if(c == 0xC2) n = continuation(i + 1, 0xA0) ? 2 : 0; // U+0080 to U+009F are C1 controls
+    else if(c > 0xC2 && c <= 0xDF) n = continuation(i + 1) ? 2 : 0;
+    else if(c >= 0xE0 && c <= 0xEF)
+      n = continuation(i + 1, c == 0xE0 ? 0xA0 : 0x80, c == 0xED ? 0x9F : 0xBF) && continuation(i + 2) ? 3 : 0;
+    else if(c >= 0xF0 && c <= 0xF4)
+      n = continuation(i + 1, c == 0xF0 ? 0x90 : 0x80, c == 0xF4 ? 0x8F : 0xBF) && continuation(i + 2) && continuation(i + 3) ? 4 : 0;
+    if(n == 0) {
+      static const char digits[] = "0123456789abcdef";
+      out += "\\x";
+      out += digits[c >> 4];
+      out += digits[c & 15];
+      n = 1;
+    } else {
+      out.append(text, i, n);
+    }
+    i += n;
+  }
+  return out;
+}
+
+// Whether `token` is entirely a number as strtod reads it (integers, reals, infinities, NaN): a
+// NUL or other byte after the number makes it not one.
+inline bool parse_number(const std::string& token, double& x)
+{
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  errno = 0;
+  x = std::strtod(begin, &end);
+  return end != begin && end == begin + token.size();
+}
+
+inline bool is_number(const std::string& token)
+{
+  double x;
+  return parse_number(token, x);
+}
+
+// How many of the `count` entries a file announces to reserve room for: no more than the rest of
+// the stream can hold (`remaining_bytes`, -1 if unknown) at `min_entry_bytes` each, and a few
+// thousand when the size is unknown (the vector grows as entries are read), so that a corrupt
+// count allocates nothing before it is found wrong.
+inline std::size_t plausible_reserve(long long count, long long remaining_bytes, long long min_entry_bytes)
+{
+  const long long bound = remaining_bytes < 0 ? 4096 : remaining_bytes / std::max(1LL, min_entry_bytes) + 1;
+  return static_cast<std::size_t>(std::max(0LL, std::min(count, bound)));
+}
+
+// Reads a stream line by line (at most max_line_bytes a line), dropping a UTF-8 byte order mark
+// at the start, comments ('#' to the end of the line) and blank lines, and turns what is left
+// into whitespace-separated tokens; errors name the file and line, with control bytes escaped.
 class Line_reader
 {
 public:
-  Line_reader(std::istream& in, const std::string& name) : in_(in), name_(name) {}
-
-  // Next non-empty line's tokens; false at the end of the stream.
-  bool next(std::vector<std::string>& tokens)
-  {
-    std::string line;
-    while(std::getline(in_, line)) {
-      ++line_number_;
-      const std::size_t hash = line.find('#');
-      if(hash != std::string::npos) line.erase(hash);
-      std::istringstream words(line);
-      tokens.clear();
-      for(std::string w; words >> w;) tokens.push_back(w);
-      if(!tokens.empty()) return true;
-    }
-    if(in_.bad()) fail("read error");
-    return false;
-  }
-
-  [[noreturn]] void fail(const std::string& what) const
-  {
-    throw Invalid_input(name_ + ":" + std::to_string(line_number_) + ": " + what);
-  }
-
-  double coordinate(const std::string& token) const
-  {
-    const char* begin = token.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(begin, &end);
-    if(end == begin || *end != '\0') fail("'" + token + "' is not a number");
-    if(!std::isfinite(x) || errno == ERANGE) fail("coordinate '" + token + "' is not a finite number");
-    return x;
-  }
-
-  long long integer(const std::string& token) const
-  {
-    const char* begin = token.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const long long i = std::strtoll(begin, &end, 10);
-    if(end == begin || *end != '\0' || errno == ERANGE) fail("'" + token + "' is not an integer");
-    return i;
-  }
-
-  // The line the last token came from (1-based; 0 before the first line).
-  std::size_t line_number() const { return line_number_; }
-
-private:
-  std::istream& in_;
-  std::string name_;
-  std::size_t line_number_ = 0;
-};
-
-// The tokens of a stream one at a time, whatever the lines they sit on (comments and blank lines
-// dropped as by Line_reader); an error names the line of the last token read.
-class Token_reader
-{
-public:
-  Token_reader(std::istream& in, const std::string& name) : in_(in), lines_(in, name)
+  Line_reader(std::istream& in, const std::string& name) : in_(in), name_(name)
   {
     // The size of a seekable stream bounds the counts a file may announce (remaining_bytes()).
     const std::ios::iostate state = in_.rdstate();
@@ -98,9 +137,106 @@ public:
     const std::istream::pos_type end = in_.fail() ? std::istream::pos_type(-1) : in_.tellg();
     in_.clear(state);
     in_.seekg(here);
-    if(in_.fail()) lines_.fail("cannot seek back in the stream");
+    if(in_.fail()) fail("cannot seek back in the stream");
     if(end != std::istream::pos_type(-1)) end_ = static_cast<long long>(end);
   }
+
+  // Next non-empty line's tokens; false at the end of the stream.
+  bool next(std::vector<std::string>& tokens)
+  {
+    for(;;) {
+      const Line_status status = read_bounded_line(in_, line_);
+      if(status == Line_status::end_of_stream) break;
+      ++line_number_;
+      if(status == Line_status::too_long)
+        throw Invalid_input(printable(name_) + ": line " + std::to_string(line_number_) + " longer than " +
+                            std::to_string(max_line_bytes) + " bytes");
+      if(line_number_ == 1 && line_.compare(0, 3, "\xEF\xBB\xBF") == 0) line_.erase(0, 3);
+      const std::size_t hash = line_.find('#');
+      if(hash != std::string::npos) line_.erase(hash);
+      split(tokens);
+      if(!tokens.empty()) return true;
+    }
+    if(in_.bad()) fail("read error");
+    return false;
+  }
+
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    throw Invalid_input(printable(name_ + ":" + std::to_string(line_number_) + ": " + what));
+  }
+
+  double coordinate(const std::string& token) const
+  {
+    double x;
+    if(!parse_number(token, x)) fail("'" + token + "' is not a number");
+    // strtod sets ERANGE for subnormals too (which the writers produce): only a result that is not
+    // finite is refused.
+    if(!std::isfinite(x)) fail("coordinate '" + token + "' is not a finite number");
+    return x;
+  }
+
+  long long integer(const std::string& token) const
+  {
+    const char* begin = token.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const long long i = std::strtoll(begin, &end, 10);
+    if(end == begin || end != begin + token.size() || errno == ERANGE) fail("'" + token + "' is not an integer");
+    return i;
+  }
+
+  // Tokens from `first` on (optional values such as colors) must be numbers, not garbage.
+  void check_numbers(const std::vector<std::string>& tokens, std::size_t first) const
+  {
+    for(std::size_t i = first; i < tokens.size(); ++i)
+      if(!is_number(tokens[i])) fail("'" + tokens[i] + "' is not a number");
+  }
+
+  // The line the last token came from (1-based; 0 before the first line).
+  std::size_t line_number() const { return line_number_; }
+
+  // An upper bound on the bytes after the last line read, or -1 if the stream cannot tell.
+  long long remaining_bytes() const
+  {
+    if(end_ < 0) return -1;
+    if(in_.eof()) return 0;
+    const std::istream::pos_type here = in_.tellg();
+    if(here == std::istream::pos_type(-1)) return -1;
+    return std::max(0LL, end_ - static_cast<long long>(here));
+  }
+
+private:
+  // The whitespace of the "C" locale, as istream's >> splits.
+  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
+
+  void split(std::vector<std::string>& tokens) const
+  {
+    tokens.clear();
+    for(std::size_t i = 0; i < line_.size();) {
+      if(is_space(line_[i])) {
+        ++i;
+        continue;
+      }
+      const std::size_t begin = i;
+      while(i < line_.size() && !is_space(line_[i])) ++i;
+      tokens.emplace_back(line_, begin, i - begin);
+    }
+  }
+
+  std::istream& in_;
+  std::string name_;
+  std::string line_;
+  std::size_t line_number_ = 0;
+  long long end_ = -1;
+};
+
+// The tokens of a stream one at a time, whatever the lines they sit on (read as by Line_reader);
+// an error names the line of the last token read.
+class Token_reader
+{
+public:
+  Token_reader(std::istream& in, const std::string& name) : lines_(in, name) {}
 
   // Next token; false at the end of the stream.
   bool next(std::string& token)
@@ -120,15 +256,10 @@ public:
   // An upper bound on the bytes left after the last token read, or -1 if the stream cannot tell.
   long long remaining_bytes() const
   {
-    if(end_ < 0) return -1;
-    long long rest = 0;
-    if(!in_.eof()) {
-      const std::istream::pos_type here = in_.tellg();
-      if(here == std::istream::pos_type(-1)) return -1;
-      rest = end_ - static_cast<long long>(here);
-    }
+    long long rest = lines_.remaining_bytes();
+    if(rest < 0) return -1;
     for(std::size_t i = position_; i < tokens_.size(); ++i) rest += static_cast<long long>(tokens_[i].size()) + 1;
-    return rest < 0 ? 0 : rest;
+    return rest;
   }
 
   [[noreturn]] void fail(const std::string& what) const { lines_.fail(what); }
@@ -136,22 +267,14 @@ public:
   long long integer(const std::string& token) const { return lines_.integer(token); }
 
   // Whether `token` is a whole number, integer or real (infinities and NaN included).
-  static bool is_number(const std::string& token)
-  {
-    const char* begin = token.c_str();
-    char* end = nullptr;
-    std::strtod(begin, &end);
-    return end != begin && *end == '\0';
-  }
+  static bool is_number(const std::string& token) { return internal::is_number(token); }
 
   std::size_t line_number() const { return lines_.line_number(); }
 
 private:
-  std::istream& in_;
   Line_reader lines_;
   std::vector<std::string> tokens_;
   std::size_t position_ = 0;
-  long long end_ = -1;
 };
 
 inline std::string to_lower(std::string s)
