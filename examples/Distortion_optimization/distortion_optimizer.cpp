@@ -38,8 +38,13 @@
 #include <unordered_map>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <sys/stat.h>
 
 namespace DO = CGAL::Distortion_optimization;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -113,7 +118,53 @@ T parse_number(const std::string& option, const std::string& text)
   std::istringstream in(text);
   T value;
   if(!(in >> value) || !in.eof()) throw Usage_error(option + " expects a number, not '" + text + "'");
+  // An unsigned read of "-5" wraps around instead of failing.
+  if(text.find('-') != std::string::npos && !(value < 0)) throw Usage_error(option + " must not be negative");
   return value;
+}
+
+// What names one file: its device and inode when it exists, else its folder's and its own name,
+// so that links and spellings such as ./o.off of one file compare equal.
+struct File_identity
+{
+  dev_t device = 0;
+  ino_t inode = 0;
+  std::string name;
+  bool operator==(const File_identity& o) const { return device == o.device && inode == o.inode && name == o.name; }
+};
+
+File_identity identify(const std::string& path)
+{
+  struct stat s;
+  if(::stat(path.c_str(), &s) == 0) return {s.st_dev, s.st_ino, ""};
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  if(::stat(folder.c_str(), &s) != 0) return {0, 0, path};   // the write will fail with its message
+  return {s.st_dev, s.st_ino, path.substr(slash == std::string::npos ? 0 : slash + 1)};
+}
+
+// Inputs must be files (a folder reads as an empty file), and no output may name an input or
+// another output: writing over the start map in place is refused too (write elsewhere, then move).
+void check_files(const Command_line& c)
+{
+  std::vector<std::pair<std::string, std::string>> inputs = {{"--source", c.source}}, outputs = {{"--output", c.output}};
+  if(!c.target.empty()) inputs.emplace_back("--target", c.target);
+  if(c.fix != "boundary" && c.fix != "none") inputs.emplace_back("--fix", c.fix);
+  if(!c.report.empty()) outputs.emplace_back("--report", c.report);
+  for(const auto& [option, path] : inputs) {
+    struct stat s;
+    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
+  }
+  for(std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    struct stat s;
+    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
+    const File_identity id = identify(path);
+    for(const auto& [other, other_path] : inputs)
+      if(identify(other_path) == id) throw Usage_error(option + " " + path + " is the file given as " + other + ": it would be overwritten");
+    for(std::size_t j = 0; j < i; ++j)
+      if(identify(outputs[j].second) == id) throw Usage_error(option + " and " + outputs[j].first + " name the same file");
+  }
 }
 
 Command_line parse(int argc, char** argv)
@@ -160,6 +211,12 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("a .mesh source needs --target (the start map)");
   if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
     throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
+  try {
+    DO::with_measure(c.measure, [](const auto&) { return 0; });
+  } catch(const DO::Invalid_input& e) {
+    throw Usage_error(std::string("--measure: ") + e.what());
+  }
+  check_files(c);
   return c;
 }
 
@@ -199,7 +256,16 @@ std::vector<unsigned char> read_fixed_vertices(const std::string& path, std::siz
   if(!in) throw DO::Invalid_input(path + ": cannot open the file of fixed vertices");
   std::vector<unsigned char> fixed(count, 0);
   std::string line;
-  for(std::size_t number = 1; std::getline(in, line); ++number) {
+  // Lines are bounded, so that an endless one (a link to /dev/zero) costs no memory.
+  namespace IOI = DO::IO::internal;
+  const auto next_line = [&](std::size_t number) {
+    const IOI::Line_status status = IOI::read_bounded_line(in, line);
+    if(status == IOI::Line_status::too_long)
+      throw DO::Invalid_input(path + ":" + std::to_string(number) + ": line longer than " +
+                              std::to_string(IOI::max_line_bytes) + " bytes");
+    return status == IOI::Line_status::line;
+  };
+  for(std::size_t number = 1; next_line(number); ++number) {
     const std::size_t hash = line.find('#');
     if(hash != std::string::npos) line.erase(hash);
     std::istringstream words(line);
@@ -315,6 +381,16 @@ int run_triangles(const Command_line& c)
     if(!is_disk(mesh))
       throw DO::Invalid_input(c.source + ": without --target the source must be a topological disk (one border, no handle)");
     DO::initial_parameterization(mesh, uv);
+    // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
+    // planar source listed clockwise gets its mirror image. (A surface is compared in each face's
+    // own frame, where any consistent orientation is positive.)
+    double signed_area = 0;
+    for(const auto& t : source.cells) {
+      const auto &a = source.points[t[0]], &b = source.points[t[1]], &d = source.points[t[2]];
+      signed_area += (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    }
+    if(planar && signed_area < 0)
+      for(Vertex v : mesh.vertices()) uv[v] = K::Point_2(uv[v].x(), -uv[v].y());
   }
 
   auto fixed = mesh.add_property_map<Vertex, bool>("v:fixed", false).first;
@@ -425,15 +501,32 @@ int run_tetrahedra(const Command_line& c)
   return 0;
 }
 
+// All outputs or none: each output gets a temporary file beside it before any input is read (so a
+// folder that cannot be written fails first), the run writes there, and the files are renamed
+// only when every one was written.
 int run(const Command_line& c)
 {
-  return DO::IO::internal::extension(c.source) == "mesh" ? run_tetrahedra(c) : run_triangles(c);
+  const auto suffix = [](const std::string& path) {
+    const std::string e = DO::IO::internal::extension(path);
+    return e.empty() ? e : "." + e;
+  };
+  DO::IO::Temporary_file output(c.output, suffix(c.output));
+  std::unique_ptr<DO::IO::Temporary_file> report;
+  if(!c.report.empty()) report = std::make_unique<DO::IO::Temporary_file>(c.report, suffix(c.report));
+  Command_line staged = c;
+  staged.output = output.path();
+  if(report) staged.report = report->path();
+  const int status = DO::IO::internal::extension(c.source) == "mesh" ? run_tetrahedra(staged) : run_triangles(staged);
+  output.rename_to(c.output);
+  if(report) report->rename_to(c.report);
+  return status;
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
+  DO::IO::remove_temporary_files_on_signals();
   try {
     return run(parse(argc, argv));
   } catch(const Usage_error& e) {
@@ -441,7 +534,7 @@ int main(int argc, char** argv)
       std::cout << usage();
       return 0;
     }
-    std::cerr << "distortion_optimizer: " << e.what() << "\n" << usage();
+    std::cerr << "distortion_optimizer: " << e.what() << " (run with --help for the usage)\n";
     return 2;
   } catch(const std::exception& e) {
     std::cerr << "distortion_optimizer: " << e.what() << "\n";

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -15,6 +16,12 @@
 #include <regex>
 #include <sstream>
 #include <string>
+
+#include <dirent.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace IO = CGAL::Distortion_optimization::IO;
 
@@ -43,6 +50,19 @@ std::string temp(const std::string& name)
 }
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
+// The files a write of `path` may leave behind: its hidden temporaries (".name.XXXXXX...").
+std::size_t leftovers(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = path.substr(0, slash + 1), prefix = "." + path.substr(slash + 1) + ".";
+  std::size_t count = 0;
+  if(DIR* d = opendir(folder.c_str())) {
+    while(dirent* e = readdir(d)) count += std::string(e->d_name).rfind(prefix, 0) == 0;
+    closedir(d);
+  }
+  return count;
+}
 
 double json_value(const std::string& json, const std::string& key)
 {
@@ -248,11 +268,11 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
     EXPECT_EQ(result.status, status) << arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(fragment), std::string::npos) << arguments << "\n" << result.output;
     EXPECT_FALSE(exists(o)) << arguments;
-    EXPECT_FALSE(exists(o + ".partial")) << arguments;
+    EXPECT_EQ(leftovers(o), 0u) << arguments;
   };
   const std::string base = "--source " + s + " --output " + o;
   expect_failure(base + " --target " + temp("missing.off"), 1, "cannot open");
-  expect_failure(base + " --target " + t + " --measure nonsense", 1, "unknown measure 'nonsense'");
+  expect_failure(base + " --target " + t + " --measure nonsense", 2, "unknown measure 'nonsense'");
   expect_failure(base + " --target " + t + " --solver newton", 2, "--solver");
   expect_failure(base + " --target " + t + " --iterations many", 2, "--iterations expects a number");
   expect_failure("--source " + s + " --target " + t, 2, "--output is required");
@@ -307,4 +327,109 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure(base + " --target " + inverted + " --measure conformal", 1, "inverted");
 
   EXPECT_EQ(run("--help").status, 0);
+}
+
+TEST(CommandLine, ErrorsAreOneLine)
+{
+  for(const std::string arguments : {"--source a.off", "--source a.off --output b.off --solver newton", "--bogus 1"}) {
+    const Tool_run result = run(arguments);
+    EXPECT_EQ(result.status, 2) << arguments;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+    EXPECT_NE(result.output.find("run with --help for the usage"), std::string::npos) << result.output;
+  }
+}
+
+TEST(CommandLine, CountsMeasuresAndFoldersAreCheckedBeforeAnyWork)
+{
+  const std::string s = temp("s4.off"), t = temp("t4.off"), o = temp("o4.off");
+  write_planar_pair(s, t);
+  const std::string base = "--source " + s + " --target " + t + " --output " + o;
+  for(const std::string& bad : {std::string(" --threads -5"), std::string(" --iterations -1 --threshold 0"),
+                                std::string(" --measure conformal*"), std::string(" --measure '*'"),
+                                std::string(" --measure CONFORMAL"), " --fix " + ::testing::TempDir()}) {
+    std::remove(o.c_str());
+    const Tool_run result = run(base + bad);
+    EXPECT_EQ(result.status, 2) << bad << "\n" << result.output;
+    EXPECT_FALSE(exists(o)) << bad;
+  }
+  // The measure is checked before the meshes are read: a missing source is not what fails.
+  const Tool_run result = run("--source " + temp("no_such_file.off") + " --output " + o + " --measure 'conformal*'");
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_NE(result.output.find("empty factor"), std::string::npos) << result.output;
+}
+
+TEST(CommandLine, NoOutputNamesAnInputOrAnotherOutput)
+{
+  const std::string s = temp("s5.off"), t = temp("t5.off"), o = temp("o5.off"), link = temp("link5.off");
+  write_planar_pair(s, t);
+  const std::string source = slurp(s), target = slurp(t);
+  std::remove(link.c_str());
+  ASSERT_EQ(symlink(s.c_str(), link.c_str()), 0);
+  const std::string folder = ::testing::TempDir(), dotted = folder + "./" + s.substr(folder.size());
+  const std::string base = "--source " + s + " --target " + t;
+  for(const std::string& bad : {" --output " + s, " --output " + dotted, " --output " + link, " --output " + t,
+                                " --output " + o + " --report " + s, " --output " + o + " --report " + t,
+                                " --output " + o + " --report " + folder + "./" + o.substr(folder.size())}) {
+    std::remove(o.c_str());
+    const Tool_run result = run(base + bad);
+    EXPECT_EQ(result.status, 2) << bad << "\n" << result.output;
+    EXPECT_FALSE(exists(o)) << bad;
+  }
+  EXPECT_EQ(slurp(s), source);
+  EXPECT_EQ(slurp(t), target);
+}
+
+TEST(CommandLine, AllOutputsOrNoneAndNoFileOfTheUserTouched)
+{
+  const std::string s = temp("s6.off"), t = temp("t6.off"), o = temp("o6.off"), r = temp("r6.json");
+  write_planar_pair(s, t);
+  std::remove(o.c_str());
+  // A report that cannot be written: the output is not written either.
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --report /nonexistent/r.json");
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_FALSE(exists(o));
+  EXPECT_EQ(leftovers(o), 0u);
+  result = run("--source " + s + " --target " + t + " --output " + o + " --report " + ::testing::TempDir());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_FALSE(exists(o));
+  // A user's file named like a temporary of old ("o.off.partial") is left as it is.
+  std::ofstream(o + ".partial") << "mine\n";
+  result = run("--source " + s + " --target " + t + " --output " + o + " --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(slurp(o + ".partial"), "mine\n");
+  EXPECT_TRUE(exists(o));
+  EXPECT_TRUE(exists(r));
+  EXPECT_EQ(leftovers(o), 0u);
+  EXPECT_EQ(leftovers(r), 0u);
+}
+
+TEST(CommandLine, AnEndlessLineInTheFixFileCostsNoMemory)
+{
+  const std::string s = temp("s7.off"), t = temp("t7.off"), o = temp("o7.off"), fix = temp("endless.txt");
+  write_planar_pair(s, t);
+  {
+    std::ofstream out(fix, std::ios::binary);
+    const std::string block(1 << 20, '7');
+    for(int k = 0; k < 64; ++k) out << block;   // 64 MB, no newline
+  }
+  const Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --fix " + fix);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("longer than"), std::string::npos) << result.output;
+  rusage usage;
+  getrusage(RUSAGE_CHILDREN, &usage);
+  EXPECT_LT(usage.ru_maxrss, 48 * 1024) << "kB at most in any child so far";
+  std::remove(fix.c_str());
+}
+
+TEST(CommandLine, TheToolsOwnStartHasTheSourcesOrientation)
+{
+  // A planar disk listed clockwise, without --target: the Tutte start is mirrored to match it.
+  const std::string s = temp("s8.off"), t = temp("t8.off"), cw = temp("cw8.off"), o = temp("o8.off");
+  write_planar_pair(s, t);
+  IO::Triangle_soup clockwise = IO::read_triangle_soup(s);
+  for(auto& c : clockwise.cells) std::swap(c[1], c[2]);
+  IO::write_triangle_soup(cw, clockwise);
+  const Tool_run result = run("--source " + cw + " --output " + o + " --measure symmetric_dirichlet");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("inverted_cells  0"), std::string::npos) << result.output;
 }

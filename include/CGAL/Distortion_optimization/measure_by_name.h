@@ -77,6 +77,7 @@ public:
   explicit Product_of_measures(const std::vector<std::string>& names)
   {
     for(const std::string& name : names) {
+      if(name.empty()) throw Invalid_input("a product of measures has an empty factor");
       const std::size_t k = measures_internal::built_in_measure_number(name);
       if(k == measures_internal::number_of_built_in_measures) throw Invalid_input("unknown measure '" + name + "'");
       factors_.push_back(k);

@@ -2,46 +2,157 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The atomic writer every IO header uses, and which programs may use for their own files (the
-// command-line tool writes its JSON report with it).
+// command-line tool writes its JSON report with it): a unique temporary file beside the target
+// (never a name a user's file may have), renamed over it only when everything was written, and
+// removed on every failure, also when the program is interrupted (remove_temporary_files_on_signals).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_WRITE_FILE_ATOMICALLY_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_WRITE_FILE_ATOMICALLY_H
 
 #include <CGAL/Distortion_optimization/errors.h>
 
+#include <array>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <ostream>
 #include <string>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace CGAL {
 namespace Distortion_optimization {
 namespace IO {
+namespace internal {
+
+// The temporary files in flight, in fixed storage that a signal handler may read: unlink() is
+// async-signal-safe, and a slot is published (flag set) only once its name is complete.
+struct Temporary_registry
+{
+  static constexpr std::size_t slots = 16, length = 4096;
+  std::array<std::array<char, length>, slots> names{};
+  std::array<std::atomic<bool>, slots> used{};
+
+  static Temporary_registry& get()
+  {
+    static Temporary_registry registry;
+    return registry;
+  }
+  int add(const std::string& name)
+  {
+    if(name.size() >= length) return -1;
+    for(std::size_t i = 0; i < slots; ++i) {
+      bool expected = false;
+      if(used[i].load() || !used[i].compare_exchange_strong(expected, true)) continue;
+      used[i] = false;   // unpublished while the name is written
+      std::memcpy(names[i].data(), name.c_str(), name.size() + 1);
+      used[i] = true;
+      return static_cast<int>(i);
+    }
+    return -1;   // full: the file is still removed on failures, only not on signals
+  }
+  void remove(int slot)
+  {
+    if(slot >= 0) used[static_cast<std::size_t>(slot)] = false;
+  }
+  void unlink_all()   // from a signal handler
+  {
+    for(std::size_t i = 0; i < slots; ++i)
+      if(used[i].load()) ::unlink(names[i].data());
+  }
+};
+
+inline void unlink_temporaries_and_reraise(int signal)
+{
+  Temporary_registry::get().unlink_all();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+} // namespace internal
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Writes a file whole or not at all: `write(stream)` fills a temporary file beside `path`, which
-/// is renamed to `path` only when everything was written.
+/// A new, empty file with a unique name beside `path` (in its folder, hidden, ending in `suffix`),
+/// removed when this object is destroyed unless `keep()` was called; while it exists it is also
+/// removed if the program is interrupted after `remove_temporary_files_on_signals()`. A program
+/// writes there and renames the file to `path` once everything was written.
+class Temporary_file
+{
+public:
+  /// \throws Invalid_input if the folder of `path` does not exist or is not writable.
+  explicit Temporary_file(const std::string& path, const std::string& suffix = "")
+  {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    if(base.empty()) throw Invalid_input(path + ": not a file name");
+    std::string name = folder + "." + base + ".XXXXXX" + suffix;
+    const int fd = ::mkstemps(&name[0], static_cast<int>(suffix.size()));
+    if(fd < 0) throw Invalid_input(path + ": cannot write (does the folder exist, and is it writable?)");
+    // mkstemp makes the file private (0600); give it the mode a new file of the user would have.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    ::close(fd);
+    path_ = name;
+    slot_ = internal::Temporary_registry::get().add(path_);
+  }
+  Temporary_file(const Temporary_file&) = delete;
+  Temporary_file& operator=(const Temporary_file&) = delete;
+  ~Temporary_file()
+  {
+    internal::Temporary_registry::get().remove(slot_);
+    if(!kept_) ::unlink(path_.c_str());
+  }
+
+  const std::string& path() const { return path_; }
+  /// Renames the file to `target`, after which it is no longer temporary.
+  /// \throws Invalid_input if the rename fails (the temporary file is then removed).
+  void rename_to(const std::string& target)
+  {
+    if(std::rename(path_.c_str(), target.c_str()) != 0) throw Invalid_input(target + ": cannot replace the file");
+    internal::Temporary_registry::get().remove(slot_);
+    slot_ = -1;
+    kept_ = true;
+  }
+
+private:
+  std::string path_;
+  int slot_ = -1;
+  bool kept_ = false;
+};
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Installs handlers of SIGINT, SIGTERM and SIGHUP that remove the temporary files being written
+/// (`Temporary_file`, `write_file_atomically()`) and then end the program as the signal would
+/// have. For programs; a library does not install signal handlers.
+inline void remove_temporary_files_on_signals()
+{
+  internal::Temporary_registry::get();   // constructed before any handler may run
+  for(int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, internal::unlink_temporaries_and_reraise);
+}
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Writes a file whole or not at all: `write(stream)` fills a `Temporary_file` beside `path`,
+/// which is renamed to `path` only when everything was written. No other file is touched.
 /// \throws Invalid_input if the file cannot be written (the temporary file is removed).
 inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write)
 {
-  const std::string temporary = path + ".partial";
+  Temporary_file temporary(path);
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    std::ofstream out(temporary.path(), std::ios::binary | std::ios::trunc);
     if(!out) throw Invalid_input(path + ": cannot write (is the folder writable?)");
     out.precision(17);
     write(out);
     out.flush();
-    if(!out) {
-      out.close();
-      std::remove(temporary.c_str());
-      throw Invalid_input(path + ": write error");
-    }
+    if(!out) throw Invalid_input(path + ": write error");
   }
-  if(std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Invalid_input(path + ": cannot replace the file");
-  }
+  temporary.rename_to(path);
 }
 
 } // namespace IO
