@@ -68,6 +68,12 @@ public:
       global_step_ = std::make_unique<Global_step<State>>(state);
   }
 
+  // After the targets were replaced from outside the steps (untangling restores a better map).
+  void targets_replaced()
+  {
+    if(guard_) guard_->rebuild(problem_.map.target);
+  }
+
   // Returns true if the map changed.
   bool harmonic_start() { return global_step_ && global_step_->harmonic_start(); }
 

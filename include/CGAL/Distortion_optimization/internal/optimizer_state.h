@@ -49,7 +49,13 @@ public:
     : p_(problem), measure_(measure), traits_(traits), workers_(workers), keep_valid_(keep_valid_cells),
       value_(problem.map.number_of_cells()), valid_(problem.map.number_of_cells())
   {
-    workers.for_each(valid_.size(), 1024, [&](std::size_t c) { valid_[c] = !is_inverted(p_.map, c, traits_); });
+    revalidate();
+  }
+
+  // The orientations and values, again after the targets were replaced; throws as the constructor.
+  void revalidate()
+  {
+    workers_.for_each(valid_.size(), 1024, [&](std::size_t c) { valid_[c] = !is_inverted(p_.map, c, traits_); });
     refresh();
   }
 

@@ -94,6 +94,8 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
                           "no map with these constraints is injective");
   }
   const std::vector<Vector<n>> start_targets = problem.map.target;
+  std::vector<Vector<n>> best_targets = start_targets;
+  std::size_t fewest = report.inverted_before;
   options.harmonic_start = false;
   Steps<State> steps(state, problem, options, workers);
 
@@ -125,7 +127,18 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     const double chi = worst > 0 ? 0.5 * (worst + root) : e * e / (2 * (root - worst));
     const double sigma = std::max(before > 0 ? 1 - energy / before : 0., 0.1), mu = (1 - sigma) * chi;
     barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
-    if(barrier.epsilon <= floor) state.keep_valid_cells(true);
+    if(report.inverted_after < fewest) {
+      fewest = report.inverted_after;
+      best_targets = problem.map.target;
+    }
+    if(barrier.epsilon <= floor && !state.keeps_valid_cells()) {
+      // The protected phase starts from the map with the fewest inverted cells seen, so that the
+      // run never ends with more than the start had.
+      problem.map.target = best_targets;
+      state.keep_valid_cells(true);
+      state.revalidate();
+      steps.targets_replaced();
+    }
     state.refresh();
     // Stuck: eps at its floor and no cell untangled for a while.
     rounds_without_progress = barrier.epsilon <= floor && report.inverted_after >= inverted_before ? rounds_without_progress + 1 : 0;
