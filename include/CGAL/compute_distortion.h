@@ -16,6 +16,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <cmath>
 #include <type_traits>
 #include <vector>
 
@@ -31,8 +32,12 @@ Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& me
   auto cell_map = CGAL::parameters::get_parameter(np, internal_np::cell_distortion_map);
   constexpr bool wants_cells = !std::is_same<decltype(cell_map), CGAL::internal_np::Param_not_found>::value;
   std::vector<double> per_cell;
-  const Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, read_vertex_weights(adapter, np),
-                                               wants_cells ? &per_cell : nullptr);
+  Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, read_vertex_weights(adapter, np),
+                                         wants_cells ? &per_cell : nullptr);
+  // Volume-weighted energies in the user's units: the adapter scaled coordinates (coordinate_scale).
+  const double volume_unit = std::pow(1. / adapter.scale, Adapter::dimension);
+  stats.energy_volume *= volume_unit;
+  stats.energy_average_volume *= volume_unit;
   if constexpr(wants_cells)
     for(std::size_t c = 0; c < per_cell.size(); ++c) put(cell_map, adapter.cell_of[c], per_cell[c]);
   return stats;

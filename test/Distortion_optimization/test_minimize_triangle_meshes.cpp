@@ -225,6 +225,31 @@ TEST(MinimizeDistortion, GeomTraitsDecideOrientations)
   EXPECT_EQ(orientation_calls, 2 * b.mesh.number_of_faces());   // each source and each target face once
 }
 
+TEST(MinimizeDistortion, HugeAndTinyCoordinatesGiveTheSameMap)
+{
+  // Products of coordinates overflow past about 1e154 in 2D (and underflow below 1e-154): the
+  // adapters scale by a power of two, so a uniformly scaled problem has the scaled solution.
+  Noisy_map reference(affine, 0.02);
+  const auto r = CGAL::minimize_distortion(reference.mesh, reference.uv, DO::Symmetric_dirichlet());
+  for(double factor : {1e155, 1e-155}) {
+    Noisy_map m(affine, 0.02);
+    for(auto v : m.mesh.vertices()) {
+      m.mesh.point(v) = Point_2(factor * m.mesh.point(v).x(), factor * m.mesh.point(v).y());
+      m.uv[v] = Point_2(factor * m.uv[v].x(), factor * m.uv[v].y());
+    }
+    const auto s = CGAL::compute_distortion(m.mesh, m.uv, DO::Symmetric_dirichlet());
+    EXPECT_EQ(s.inverted_cells, 0u) << factor;
+    EXPECT_NEAR(s.mean_volume, r.initial_energy, 1e-9 * r.initial_energy) << factor;
+    const auto q = CGAL::minimize_distortion(m.mesh, m.uv, DO::Symmetric_dirichlet());
+    EXPECT_EQ(q.inverted_cells, 0u) << factor;
+    EXPECT_NEAR(q.final_energy, r.final_energy, 1e-6 * r.final_energy) << factor;
+    for(auto v : m.mesh.vertices()) {
+      EXPECT_NEAR(m.uv[v].x() / factor, reference.uv[v].x(), 1e-4) << factor;
+      EXPECT_NEAR(m.uv[v].y() / factor, reference.uv[v].y(), 1e-4) << factor;
+    }
+  }
+}
+
 TEST(MinimizeDistortion, VisitorStopsTheRunAtAConsistentMap)
 {
   Noisy_map m(affine, 0.02);

@@ -5,6 +5,7 @@
 #include <CGAL/Distortion_optimization/tetrahedralize_with_tetgen.h>
 #include <CGAL/Distortion_optimization/untangle.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
+#include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -316,6 +317,32 @@ TEST(TetrahedralMeshes, TangledCubeWithAFixedBoundaryIsUntangledThenOptimized)
   }
 }
 
+TEST(TetrahedralMeshes, HugeCoordinatesGiveTheScaledMap)
+{
+  // A cube of side 2e110 (volumes near 1e330 would overflow): the same map as the unit cube's.
+  std::vector<std::array<double, 3>> points, scaled;
+  std::vector<std::array<std::size_t, 4>> tets;
+  tetgen_cube(0.05, points, tets);
+  for(const auto& p : points) scaled.push_back({1e110 * p[0], 1e110 * p[1], 1e110 * p[2]});
+  C3t3 unit, huge;
+  const auto a = DO::c3t3_from_tetrahedra(points, tets, unit), b = DO::c3t3_from_tetrahedra(scaled, tets, huge);
+  Target_storage x, y;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const Point_3 p = radial(Point_3(points[i][0], points[i][1], points[i][2]));
+    x[a[i]] = p;
+    y[b[i]] = Point_3(1e110 * p.x(), 1e110 * p.y(), 1e110 * p.z());
+  }
+  const auto s = CGAL::compute_distortion(unit, Target_map(x), DO::Symmetric_dirichlet());
+  const auto t = CGAL::compute_distortion(huge, Target_map(y), DO::Symmetric_dirichlet());
+  EXPECT_EQ(t.inverted_cells, 0u);
+  EXPECT_NEAR(t.mean_volume, s.mean_volume, 1e-9 * s.mean_volume);
+  const auto r = CGAL::minimize_distortion(unit, Target_map(x), DO::Symmetric_dirichlet(), CGAL::parameters::number_of_iterations(5));
+  const auto q = CGAL::minimize_distortion(huge, Target_map(y), DO::Symmetric_dirichlet(), CGAL::parameters::number_of_iterations(5));
+  EXPECT_EQ(q.inverted_cells, 0u);
+  EXPECT_NEAR(q.final_energy, r.final_energy, 1e-6 * r.final_energy);
+  for(std::size_t i = 0; i < points.size(); ++i) EXPECT_NEAR(CGAL::to_double(y.at(b[i]).x()) / 1e110, CGAL::to_double(x.at(a[i]).x()), 1e-4);
+}
+
 TEST(TetrahedralMeshes, HarmonicMapOfAnAffineBoundaryIsThatAffineMap)
 {
   const C3t3 c3t3 = mesh_sphere(0.4);
@@ -365,6 +392,25 @@ TEST(TetrahedralMeshes, BadInput)
     EXPECT_NE(std::string(e.what()).find("tetrahedron 0 is flat"), std::string::npos) << e.what();
   }
   EXPECT_THROW(DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 7}}, c3t3), DO::Invalid_input);
+
+  // Complexes that are not manifold, each named with its cells: a tetrahedron listed twice (in
+  // another vertex order), two that meet only at an edge, two that meet only at a vertex.
+  const std::vector<std::array<double, 3>> star = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                                   {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  const std::vector<std::pair<std::vector<std::array<std::size_t, 4>>, std::string>> bad = {
+    {{{0, 1, 2, 3}, {1, 0, 3, 2}}, "tetrahedra 0 and 1 have the same vertices"},
+    {{{0, 1, 2, 3}, {0, 1, 5, 6}}, "tetrahedra 0 and 1 meet only at the edge (0, 1)"},
+    {{{0, 1, 2, 3}, {0, 4, 5, 6}}, "tetrahedra 0 and 1 meet only at vertex 0"}};
+  for(const auto& [tets, message] : bad) {
+    try {
+      DO::c3t3_from_tetrahedra(star, tets, c3t3);
+      ADD_FAILURE() << "accepted: " << message;
+    } catch(const DO::Invalid_input& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  // Two tetrahedra sharing a facet are a manifold complex.
+  EXPECT_EQ(DO::c3t3_from_tetrahedra(star, {{0, 1, 2, 3}, {0, 2, 1, 6}}, c3t3).size(), star.size());
 
   // An inverted start under a normalized measure names the cell and writes nothing.
   const auto handles = DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 4}, {1, 3, 2, 4}}, c3t3);

@@ -10,6 +10,7 @@
 #include <CGAL/enum.h>
 #include <CGAL/Kernel/global_functions.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -19,6 +20,67 @@
 namespace CGAL {
 namespace Distortion_optimization {
 
+namespace internal {
+
+// The tetrahedra must form a manifold complex, and build_triangulation() only notices a facet
+// shared by three of them: a tetrahedron listed twice, or two that meet only at an edge or a
+// vertex, would make a complex whose boundary is not a surface. Around each edge and each vertex,
+// the tetrahedra must be connected through facets containing it; the message names the cells.
+inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra)
+{
+  using Key = std::array<std::size_t, 4>;
+  std::map<Key, std::size_t> seen;
+  std::map<std::array<std::size_t, 2>, std::vector<std::size_t>> edges;
+  std::map<std::size_t, std::vector<std::size_t>> stars;
+  for(std::size_t t = 0; t < tetrahedra.size(); ++t) {
+    Key k = tetrahedra[t];
+    std::sort(k.begin(), k.end());
+    const auto [it, fresh] = seen.emplace(k, t);
+    if(!fresh)
+      throw Invalid_input("tetrahedra " + std::to_string(it->second) + " and " + std::to_string(t) + " have the same vertices");
+    for(int i = 0; i < 4; ++i) {
+      stars[k[i]].push_back(t);
+      for(int j = i + 1; j < 4; ++j) edges[{k[i], k[j]}].push_back(t);
+    }
+  }
+  // Tetrahedra a and b share a facet iff they share three vertices.
+  const auto share_facet = [&](std::size_t a, std::size_t b) {
+    int common = 0;
+    for(std::size_t u : tetrahedra[a])
+      for(std::size_t w : tetrahedra[b]) common += u == w;
+    return common == 3;
+  };
+  // Whether the cells (around one edge or vertex) are connected through shared facets.
+  const auto connected = [&](const std::vector<std::size_t>& cells, std::size_t& apart) {
+    std::vector<char> reached(cells.size(), 0);
+    std::vector<std::size_t> stack = {0};
+    reached[0] = 1;
+    while(!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      for(std::size_t j = 0; j < cells.size(); ++j)
+        if(!reached[j] && share_facet(cells[i], cells[j])) {
+          reached[j] = 1;
+          stack.push_back(j);
+        }
+    }
+    for(std::size_t j = 0; j < cells.size(); ++j)
+      if(!reached[j]) { apart = cells[j]; return false; }
+    return true;
+  };
+  std::size_t apart = 0;
+  for(const auto& [edge, cells] : edges)
+    if(!connected(cells, apart))
+      throw Invalid_input("tetrahedra " + std::to_string(cells[0]) + " and " + std::to_string(apart) + " meet only at the edge (" +
+                          std::to_string(edge[0]) + ", " + std::to_string(edge[1]) + "): the complex is not manifold there");
+  for(const auto& [vertex, cells] : stars)
+    if(!connected(cells, apart))
+      throw Invalid_input("tetrahedra " + std::to_string(cells[0]) + " and " + std::to_string(apart) + " meet only at vertex " +
+                          std::to_string(vertex) + ": the complex is not manifold there");
+}
+
+} // namespace internal
+
 /// \ingroup PkgDistortionOptimizationRef
 /// Fills `c3t3` (a `CGAL::Mesh_complex_3_in_triangulation_3`, cleared first) with the given
 /// tetrahedra, all in subdomain `label` (> 0), vertex `i` at `points[i]`: the way to hand a mesh
@@ -26,7 +88,9 @@ namespace Distortion_optimization {
 /// are stored with two vertices swapped (a simplicial map does not depend on the vertex order).
 /// \returns the vertex handle of each point (`Vertex_handle()` for a point in no tetrahedron).
 /// \throws Invalid_input for an index out of range, a non-finite point, a flat tetrahedron (exact
-/// predicate, the message names it) or tetrahedra that do not form a manifold complex.
+/// predicate, the message names it), a tetrahedron listed twice, or tetrahedra that do not form a
+/// manifold complex: a facet in more than two, or two that meet only at an edge or a vertex (the
+/// message names them).
 template <class C3T3>
 std::vector<typename C3T3::Triangulation::Vertex_handle>
 c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
@@ -58,6 +122,7 @@ c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
     if(o == CGAL::NEGATIVE) std::swap(cell[2], cell[3]);
     cells.push_back(cell);
   }
+  internal::check_manifold_tetrahedra(tetrahedra);
   Tr tr;
   std::vector<typename Tr::Vertex_handle> handles;
   const std::map<std::array<int, 3>, typename Tr::Cell::Surface_patch_index> no_patches;

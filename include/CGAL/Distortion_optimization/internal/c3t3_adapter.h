@@ -15,11 +15,13 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -47,6 +49,7 @@ public:
   std::vector<Cell_handle> cell_of;           // cell index -> handle
   std::vector<unsigned char> on_boundary;     // vertex on a facet shared with a cell not in the complex
   GeomTraits traits;
+  double scale = 1;                           // of map's coordinates (coordinate_scale)
 
   template <class TargetMap>
   C3t3_adapter(const C3T3& c3t3, const TargetMap& target, const GeomTraits& gt) : traits(gt)
@@ -68,6 +71,8 @@ public:
       return inserted.first->second;
     };
     using P = typename GeomTraits::Point_3;
+    std::vector<std::pair<typename Simplicial_map<3>::Cell, Matrix<3>>> cells;
+    double largest = 0;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       typename Simplicial_map<3>::Cell cell;
       std::array<Vector<3>, 4> x;
@@ -77,13 +82,14 @@ public:
         const auto& q = point(tr.point(c, i));
         x[i] = Vector<3>(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
         p[i] = P(x[i][0], x[i][1], x[i][2]);
+        largest = std::max(largest, x[i].cwiseAbs().maxCoeff());
       }
       if(traits.orientation_3_object()(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE)
         throw Invalid_input("source cell " + std::to_string(cell_of.size()) + " of the complex is not positively oriented "
                             "(degenerate)");
       Matrix<3> Dm;
       for(int k = 0; k < 3; ++k) Dm.col(k) = x[k + 1] - x[0];
-      map.add_cell(cell, Dm, +1);
+      cells.emplace_back(cell, Dm);
       cell_of.push_back(Cell_handle(c));
       for(int i = 0; i < 4; ++i)
         if(!c3t3.is_in_complex(c->neighbor(i)))
@@ -92,6 +98,10 @@ public:
     }
     if(cell_of.empty())
       throw Invalid_input("the complex has no cell");
+    for(const Vector<3>& y : map.target) largest = std::max(largest, y.cwiseAbs().maxCoeff());
+    scale = coordinate_scale(largest);
+    for(Vector<3>& y : map.target) y *= scale;
+    for(const auto& [cell, Dm] : cells) map.add_cell(cell, scale * Dm, +1);
   }
 
   // Writes the targets x of the free vertices into the target map.
@@ -100,7 +110,7 @@ public:
   {
     using Point_3 = typename boost::property_traits<TargetMap>::value_type;
     for(std::size_t i = 0; i < vertex_of.size(); ++i)
-      if(is_free[i]) put(target, vertex_of[i], Point_3(x[i][0], x[i][1], x[i][2]));
+      if(is_free[i]) put(target, vertex_of[i], Point_3(x[i][0] / scale, x[i][1] / scale, x[i][2] / scale));
   }
 };
 

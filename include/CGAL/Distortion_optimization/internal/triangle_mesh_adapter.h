@@ -20,6 +20,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -46,6 +47,7 @@ public:
   std::vector<face_descriptor> cell_of;      // cell index -> face
   std::vector<unsigned char> on_boundary;    // border vertices: the default constraints
   GeomTraits traits;
+  double scale = 1;                          // of map's coordinates (coordinate_scale)
 
   template <class TargetMap>
   Triangle_mesh_adapter(const TriangleMesh& tm, VertexPointMap vpm, const TargetMap& target, const GeomTraits& gt)
@@ -69,6 +71,15 @@ public:
       vertex_of.push_back(v);
       on_boundary.push_back(CGAL::is_border(v, tm) ? 1 : 0);
     }
+    double largest = 0;
+    for(std::size_t i = 0; i < source.size(); ++i)
+      largest = std::max({largest, source[i].cwiseAbs().maxCoeff(), map.target[i].cwiseAbs().maxCoeff()});
+    scale = coordinate_scale(largest);
+    if(scale != 1)
+      for(std::size_t i = 0; i < source.size(); ++i) {
+        source[i] *= scale;
+        map.target[i] *= scale;
+      }
     for(face_descriptor f : faces(tm)) {
       const std::size_t c = cell_of.size();
       if(degree(f, tm) != 3)
@@ -92,7 +103,7 @@ public:
   {
     using Point_2 = typename boost::property_traits<TargetMap>::value_type;
     for(std::size_t i = 0; i < vertex_of.size(); ++i)
-      if(is_free[i]) put(target, vertex_of[i], Point_2(x[i][0], x[i][1]));
+      if(is_free[i]) put(target, vertex_of[i], Point_2(x[i][0] / scale, x[i][1] / scale));
   }
 
 private:
