@@ -29,10 +29,17 @@ for reader in read_OFF read_OBJ read_MEDIT; do
   case "$reader" in
     read_OFF)
       cp build/data/*.off "$dir/corpus/" 2>/dev/null || true
-      printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$dir/corpus/triangle.off" ;;
+      printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$dir/corpus/triangle.off"
+      # The hostile cases of issues 19 and 20: BOM, NUL, escapes, subnormals, extra face, huge counts.
+      printf '\xef\xbb\xbfOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$dir/corpus/bom.off"
+      printf 'OFF\n3 1 0\n0 0 0\n1 0\0009 0\n0 1 0\n3 0 1 2\n' > "$dir/corpus/nul.off"
+      printf 'OFF\n3 1 0\n0 0 0\n1e-320 0 0\n0 1 0\n3 0 1 2\n' > "$dir/corpus/subnormal.off"
+      printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n' > "$dir/corpus/extra_face.off"
+      printf 'OFF\n16777216 16777216 0\n\x1b[31m\n' > "$dir/corpus/huge_counts.off" ;;
     read_OBJ)
       printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf -1 -2 -3\n' > "$dir/corpus/triangle.obj"
-      printf '# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n' > "$dir/corpus/square.obj" ;;
+      printf '# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n' > "$dir/corpus/square.obj"
+      printf '\xef\xbb\xbfv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n' > "$dir/corpus/bom.obj" ;;
     read_MEDIT)
       cp build/data/*.mesh "$dir/corpus/" 2>/dev/null || true
       printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 1\nEnd\n' > "$dir/corpus/tet.mesh" ;;
