@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Fuzzes the OFF, OBJ and Medit readers with libFuzzer (clang), AddressSanitizer and UBSan.
-#   bash scripts/fuzz.sh [seconds per reader, default 600]
+# Fuzzes the OFF, OBJ and Medit readers, the vertex-list reader (the tool's --fix file) and the
+# tool's command-line parser with libFuzzer (clang), AddressSanitizer and UBSan.
+#   bash scripts/fuzz.sh [seconds per target, default 600] [target ...]
 # Seeds: the real meshes extracted by the build (build/data) and small hand-written files.
 # Exits non-zero if a reader crashed, hung or raised a sanitizer report; artifacts go to
 # build/fuzz/<reader>/.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds="${1:-600}"
+shift || true
+targets=("$@")
+[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT read_vertex_list command_line)
 
 missing=()
 for pkg in clang libclang-rt-14-dev libeigen3-dev libcgal-dev libboost-dev libgmp-dev libmpfr-dev libcgal-demo; do
@@ -23,7 +27,7 @@ mkdir -p "$out"
 bash scripts/extract_data.sh build/data >/dev/null
 
 status=0
-for reader in read_OFF read_OBJ read_MEDIT; do
+for reader in "${targets[@]}"; do
   dir="$out/$reader"
   mkdir -p "$dir/corpus" "$dir/artifacts"
   case "$reader" in
@@ -43,14 +47,26 @@ for reader in read_OFF read_OBJ read_MEDIT; do
     read_MEDIT)
       cp build/data/*.mesh "$dir/corpus/" 2>/dev/null || true
       printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 1\nEnd\n' > "$dir/corpus/tet.mesh" ;;
+    read_vertex_list)
+      printf '# pinned\n0\n12\n\n999\n' > "$dir/corpus/list.txt"
+      printf '\xef\xbb\xbf3 # bom\n-1\n1000\n7 8\n' > "$dir/corpus/bad.txt" ;;
+    command_line)
+      printf -- '--source\0s.off\0--target\0t.off\0--output\0o.off\0--measure\0conformal*isometric\0--threads\0-5' > "$dir/corpus/args"
+      printf -- '--source\0a.mesh\0--output\0./a.mesh\0--report\0r.json\0--untangle\0--fix\0none\0--iterations\0-1' > "$dir/corpus/args2" ;;
+  esac
+  source_file=test/Distortion_optimization/fuzz/fuzz_reader.cpp
+  case "$reader" in
+    read_vertex_list) source_file=test/Distortion_optimization/fuzz/fuzz_vertex_list.cpp ;;
+    command_line) source_file=test/Distortion_optimization/fuzz/fuzz_command_line.cpp ;;
   esac
   echo "fuzz.sh: building $reader"
   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
     -DFUZZ_READER="$reader" -Iinclude -I/usr/include/eigen3 \
-    test/Distortion_optimization/fuzz/fuzz_reader.cpp -o "$dir/fuzz_$reader"
+    "$source_file" -o "$dir/fuzz_$reader"
   echo "fuzz.sh: running $reader for $seconds s"
-  if ! "$dir/fuzz_$reader" -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-       -artifact_prefix="$dir/artifacts/" "$dir/corpus" > "$dir/log.txt" 2>&1; then
+  # The command-line target stat()s the paths it makes up: run it where they name nothing of ours.
+  if ! (cd "$dir" && "./fuzz_$reader" -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+       -artifact_prefix=artifacts/ corpus > log.txt 2>&1); then
     echo "fuzz.sh: $reader FAILED, see $dir/log.txt and $dir/artifacts/"
     status=1
   fi

@@ -11,8 +11,11 @@
 // Energies are volume-weighted means sum vol(c) D(J_c) / sum vol(c).
 // Exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command line.
 
+#include "command_line.h"
+
 #include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+#include <CGAL/Distortion_optimization/IO/vertex_list.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
@@ -55,170 +58,10 @@ using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
 
 namespace {
 
-// The usage text; the measures come from the package's registry of built-in measures.
-std::string usage()
-{
-  const auto& known = DO::measure_names();
-  std::vector<std::string> words(known.begin(), known.end());
-  words.front() += " (default)";
-  words.push_back("or a product such as " + known[0] + "*" + known[3]);
-  std::string names;
-  std::size_t column = 15;   // where the text of NAME starts
-  for(const std::string& word : words) {
-    if(!names.empty()) {
-      const bool wrap = column + word.size() + 2 > 92;
-      names += wrap ? ",\n               " : ", ";
-      column = wrap ? 15 : column + 2;
-    }
-    names += word;
-    column += word.size();
-  }
-  return
-  "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
-  "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
-  "         [--threads N] [--report R.json] [--schedule alternating|local|global] [--untangle]\n"
-  "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
-  "               vertices and cells in the same order; a planar target has z = 0; without\n"
-  "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
-  "               each cell's distortion, for ParaView)\n"
-  "  NAME         " + names + "\n"
-  "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
-  "               one 0-based vertex index per line. With free border vertices the boundary is\n"
-  "               kept from crossing itself (global injectivity)\n"
-  "  --iterations largest number of iterations, each a local sweep and a global step (default 100)\n"
-  "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
-  "               energy above the measure's minimum (default 1e-4)\n"
-  "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
-  "  --threads    number of threads (default 1); the output is the same for every run with\n"
-  "               the same number\n"
-  "  --report     also write the results as JSON\n"
-  "  --untangle   when the start has inverted or flat cells, untangle it first (then optimize);\n"
-  "               without it such a start is refused under a measure infinite there\n"
-  "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
-  "               harmonic start), local (the paper's sweeps only) or global\n";
-}
-
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
-
-struct Command_line
-{
-  std::string source, target, output, measure = DO::measure_names()[0], fix = "boundary", solver = "gd", report,
-    schedule = "alternating";
-  std::size_t iterations = 100, threads = 1;
-  double threshold = 1e-4;
-  bool untangle = false;
-};
-
-template <class T>
-T parse_number(const std::string& option, const std::string& text)
-{
-  std::istringstream in(text);
-  T value;
-  if(!(in >> value) || !in.eof()) throw Usage_error(option + " expects a number, not '" + text + "'");
-  // An unsigned read of "-5" wraps around instead of failing.
-  if(text.find('-') != std::string::npos && !(value < 0)) throw Usage_error(option + " must not be negative");
-  return value;
-}
-
-// What names one file: its device and inode when it exists, else its folder's and its own name,
-// so that links and spellings such as ./o.off of one file compare equal.
-struct File_identity
-{
-  dev_t device = 0;
-  ino_t inode = 0;
-  std::string name;
-  bool operator==(const File_identity& o) const { return device == o.device && inode == o.inode && name == o.name; }
-};
-
-File_identity identify(const std::string& path)
-{
-  struct stat s;
-  if(::stat(path.c_str(), &s) == 0) return {s.st_dev, s.st_ino, ""};
-  const std::size_t slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
-  if(::stat(folder.c_str(), &s) != 0) return {0, 0, path};   // the write will fail with its message
-  return {s.st_dev, s.st_ino, path.substr(slash == std::string::npos ? 0 : slash + 1)};
-}
-
-// Inputs must be files (a folder reads as an empty file), and no output may name an input or
-// another output: writing over the start map in place is refused too (write elsewhere, then move).
-void check_files(const Command_line& c)
-{
-  std::vector<std::pair<std::string, std::string>> inputs = {{"--source", c.source}}, outputs = {{"--output", c.output}};
-  if(!c.target.empty()) inputs.emplace_back("--target", c.target);
-  if(c.fix != "boundary" && c.fix != "none") inputs.emplace_back("--fix", c.fix);
-  if(!c.report.empty()) outputs.emplace_back("--report", c.report);
-  for(const auto& [option, path] : inputs) {
-    struct stat s;
-    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
-  }
-  for(std::size_t i = 0; i < outputs.size(); ++i) {
-    const auto& [option, path] = outputs[i];
-    struct stat s;
-    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
-    const File_identity id = identify(path);
-    for(const auto& [other, other_path] : inputs)
-      if(identify(other_path) == id) throw Usage_error(option + " " + path + " is the file given as " + other + ": it would be overwritten");
-    for(std::size_t j = 0; j < i; ++j)
-      if(identify(outputs[j].second) == id) throw Usage_error(option + " and " + outputs[j].first + " name the same file");
-  }
-}
-
-Command_line parse(int argc, char** argv)
-{
-  Command_line c;
-  std::map<std::string, std::string> seen;
-  for(int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    if(option == "--help" || option == "-h") throw Usage_error("");
-    if(option == "--untangle") {   // the one option without a value
-      if(c.untangle) throw Usage_error(option + " is given twice");
-      c.untangle = true;
-      continue;
-    }
-    if(i + 1 >= argc) throw Usage_error(option + " needs a value");
-    const std::string value = argv[++i];
-    if(seen.count(option)) throw Usage_error(option + " is given twice");
-    seen[option] = value;
-    if(option == "--source") c.source = value;
-    else if(option == "--target") c.target = value;
-    else if(option == "--output") c.output = value;
-    else if(option == "--measure") c.measure = value;
-    else if(option == "--fix") c.fix = value;
-    else if(option == "--solver") c.solver = value;
-    else if(option == "--report") c.report = value;
-    else if(option == "--schedule") c.schedule = value;
-    else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
-    else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
-    else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
-    else throw Usage_error("unknown option " + option);
-  }
-  if(c.source.empty()) throw Usage_error("--source is required");
-  if(c.output.empty()) throw Usage_error("--output is required");
-  if(c.solver != "gd" && c.solver != "bfgs") throw Usage_error("--solver is gd or bfgs, not '" + c.solver + "'");
-  if(c.threads == 0) throw Usage_error("--threads must be at least 1");
-  if(c.schedule != "alternating" && c.schedule != "local" && c.schedule != "global")
-    throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
-  if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
-  const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
-  if(in == "mesh" ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
-    throw Usage_error(in == "mesh" ? "--output must end in .mesh or .vtu for a tetrahedral source"
-                                   : "--output must end in .off, .obj or .vtu");
-  if(in == "mesh" && c.target.empty())
-    throw Usage_error("a .mesh source needs --target (the start map)");
-  if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
-    throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
-  try {
-    DO::with_measure(c.measure, [](const auto&) { return 0; });
-  } catch(const DO::Invalid_input& e) {
-    throw Usage_error(std::string("--measure: ") + e.what());
-  }
-  check_files(c);
-  return c;
-}
+using distortion_optimizer::Command_line;
+using distortion_optimizer::Usage_error;
+using distortion_optimizer::parse;
+using distortion_optimizer::usage;
 
 // The source as a Surface_mesh, vertex i and face f in file order; rejects what a surface mesh
 // cannot represent (non-manifold edges or vertices, inconsistent orientation, unused vertices).
@@ -248,40 +91,6 @@ bool is_disk(const Mesh& mesh)
   const long long euler = static_cast<long long>(mesh.number_of_vertices()) - static_cast<long long>(mesh.number_of_edges()) +
                           static_cast<long long>(mesh.number_of_faces());
   return cycles.size() == 1 && euler == 1;
-}
-
-std::vector<unsigned char> read_fixed_vertices(const std::string& path, std::size_t count)
-{
-  std::ifstream in(path);
-  if(!in) throw DO::Invalid_input(path + ": cannot open the file of fixed vertices");
-  std::vector<unsigned char> fixed(count, 0);
-  std::string line;
-  // Lines are bounded, so that an endless one (a link to /dev/zero) costs no memory.
-  namespace IOI = DO::IO::internal;
-  const auto next_line = [&](std::size_t number) {
-    const IOI::Line_status status = IOI::read_bounded_line(in, line);
-    if(status == IOI::Line_status::too_long)
-      throw DO::Invalid_input(path + ":" + std::to_string(number) + ": line longer than " +
-                              std::to_string(IOI::max_line_bytes) + " bytes");
-    return status == IOI::Line_status::line;
-  };
-  for(std::size_t number = 1; next_line(number); ++number) {
-    const std::size_t hash = line.find('#');
-    if(hash != std::string::npos) line.erase(hash);
-    std::istringstream words(line);
-    long long index;
-    if(!(words >> index)) {
-      if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
-      throw DO::Invalid_input(path + ":" + std::to_string(number) + ": not a vertex index");
-    }
-    std::string rest;
-    if(words >> rest) throw DO::Invalid_input(path + ":" + std::to_string(number) + ": one vertex index per line");
-    if(index < 0 || static_cast<std::size_t>(index) >= count)
-      throw DO::Invalid_input(path + ":" + std::to_string(number) + ": vertex index " + std::to_string(index) +
-                              " out of range (the mesh has " + std::to_string(count) + " vertices)");
-    fixed[static_cast<std::size_t>(index)] = 1;
-  }
-  return fixed;
 }
 
 // A target must list the source's vertices (as many) and cells (the same, in the same order).
@@ -397,7 +206,7 @@ int run_triangles(const Command_line& c)
   if(c.fix == "boundary") {
     for(Vertex v : mesh.vertices()) fixed[v] = mesh.is_border(v);
   } else if(c.fix != "none") {
-    const auto list = read_fixed_vertices(c.fix, mesh.number_of_vertices());
+    const auto list = DO::IO::read_vertex_list(c.fix, mesh.number_of_vertices());
     for(Vertex v : mesh.vertices()) fixed[v] = list[std::size_t(v)] != 0;
   }
 
@@ -456,7 +265,7 @@ int run_tetrahedra(const Command_line& c)
   boost::associative_property_map<decltype(storage)> target_map(storage);
 
   std::vector<unsigned char> listed;
-  if(c.fix != "boundary" && c.fix != "none") listed = read_fixed_vertices(c.fix, source.points.size());
+  if(c.fix != "boundary" && c.fix != "none") listed = DO::IO::read_vertex_list(c.fix, source.points.size());
   auto fixed = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) {
     return c.fix == "none" ? false : listed[index.at(v)] != 0;
   });

@@ -1,0 +1,192 @@
+// The command line of distortion_optimizer: its usage text, and a parser that checks everything
+// that can be checked before any file is read (options, numbers, the measure's name, which files
+// are inputs and outputs). Kept apart from the tool so that a fuzz target can drive the parser.
+
+#ifndef DISTORTION_OPTIMIZER_COMMAND_LINE_H
+#define DISTORTION_OPTIMIZER_COMMAND_LINE_H
+
+#include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/measure_by_name.h>
+
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <sys/stat.h>
+
+namespace distortion_optimizer {
+
+namespace DO = CGAL::Distortion_optimization;
+
+// The usage text; the measures come from the package's registry of built-in measures.
+std::string usage()
+{
+  const auto& known = DO::measure_names();
+  std::vector<std::string> words(known.begin(), known.end());
+  words.front() += " (default)";
+  words.push_back("or a product such as " + known[0] + "*" + known[3]);
+  std::string names;
+  std::size_t column = 15;   // where the text of NAME starts
+  for(const std::string& word : words) {
+    if(!names.empty()) {
+      const bool wrap = column + word.size() + 2 > 92;
+      names += wrap ? ",\n               " : ", ";
+      column = wrap ? 15 : column + 2;
+    }
+    names += word;
+    column += word.size();
+  }
+  return
+  "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
+  "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
+  "         [--threads N] [--report R.json] [--schedule alternating|local|global] [--untangle]\n"
+  "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
+  "               vertices and cells in the same order; a planar target has z = 0; without\n"
+  "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
+  "               each cell's distortion, for ParaView)\n"
+  "  NAME         " + names + "\n"
+  "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
+  "               one 0-based vertex index per line. With free border vertices the boundary is\n"
+  "               kept from crossing itself (global injectivity)\n"
+  "  --iterations largest number of iterations, each a local sweep and a global step (default 100)\n"
+  "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
+  "               energy above the measure's minimum (default 1e-4)\n"
+  "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
+  "  --threads    number of threads (default 1); the output is the same for every run with\n"
+  "               the same number\n"
+  "  --report     also write the results as JSON\n"
+  "  --untangle   when the start has inverted or flat cells, untangle it first (then optimize);\n"
+  "               without it such a start is refused under a measure infinite there\n"
+  "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
+  "               harmonic start), local (the paper's sweeps only) or global\n";
+}
+
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Command_line
+{
+  std::string source, target, output, measure = DO::measure_names()[0], fix = "boundary", solver = "gd", report,
+    schedule = "alternating";
+  std::size_t iterations = 100, threads = 1;
+  double threshold = 1e-4;
+  bool untangle = false;
+};
+
+template <class T>
+T parse_number(const std::string& option, const std::string& text)
+{
+  std::istringstream in(text);
+  T value;
+  if(!(in >> value) || !in.eof()) throw Usage_error(option + " expects a number, not '" + text + "'");
+  // An unsigned read of "-5" wraps around instead of failing.
+  if(text.find('-') != std::string::npos && !(value < 0)) throw Usage_error(option + " must not be negative");
+  return value;
+}
+
+// What names one file: its device and inode when it exists, else its folder's and its own name,
+// so that links and spellings such as ./o.off of one file compare equal.
+struct File_identity
+{
+  dev_t device = 0;
+  ino_t inode = 0;
+  std::string name;
+  bool operator==(const File_identity& o) const { return device == o.device && inode == o.inode && name == o.name; }
+};
+
+File_identity identify(const std::string& path)
+{
+  struct stat s;
+  if(::stat(path.c_str(), &s) == 0) return {s.st_dev, s.st_ino, ""};
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  if(::stat(folder.c_str(), &s) != 0) return {0, 0, path};   // the write will fail with its message
+  return {s.st_dev, s.st_ino, path.substr(slash == std::string::npos ? 0 : slash + 1)};
+}
+
+// Inputs must be files (a folder reads as an empty file), and no output may name an input or
+// another output: writing over the start map in place is refused too (write elsewhere, then move).
+void check_files(const Command_line& c)
+{
+  std::vector<std::pair<std::string, std::string>> inputs = {{"--source", c.source}}, outputs = {{"--output", c.output}};
+  if(!c.target.empty()) inputs.emplace_back("--target", c.target);
+  if(c.fix != "boundary" && c.fix != "none") inputs.emplace_back("--fix", c.fix);
+  if(!c.report.empty()) outputs.emplace_back("--report", c.report);
+  for(const auto& [option, path] : inputs) {
+    struct stat s;
+    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
+  }
+  for(std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    struct stat s;
+    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
+    const File_identity id = identify(path);
+    for(const auto& [other, other_path] : inputs)
+      if(identify(other_path) == id) throw Usage_error(option + " " + path + " is the file given as " + other + ": it would be overwritten");
+    for(std::size_t j = 0; j < i; ++j)
+      if(identify(outputs[j].second) == id) throw Usage_error(option + " and " + outputs[j].first + " name the same file");
+  }
+}
+
+Command_line parse(int argc, char** argv)
+{
+  Command_line c;
+  std::map<std::string, std::string> seen;
+  for(int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    if(option == "--help" || option == "-h") throw Usage_error("");
+    if(option == "--untangle") {   // the one option without a value
+      if(c.untangle) throw Usage_error(option + " is given twice");
+      c.untangle = true;
+      continue;
+    }
+    if(i + 1 >= argc) throw Usage_error(option + " needs a value");
+    const std::string value = argv[++i];
+    if(seen.count(option)) throw Usage_error(option + " is given twice");
+    seen[option] = value;
+    if(option == "--source") c.source = value;
+    else if(option == "--target") c.target = value;
+    else if(option == "--output") c.output = value;
+    else if(option == "--measure") c.measure = value;
+    else if(option == "--fix") c.fix = value;
+    else if(option == "--solver") c.solver = value;
+    else if(option == "--report") c.report = value;
+    else if(option == "--schedule") c.schedule = value;
+    else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
+    else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
+    else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
+    else throw Usage_error("unknown option " + option);
+  }
+  if(c.source.empty()) throw Usage_error("--source is required");
+  if(c.output.empty()) throw Usage_error("--output is required");
+  if(c.solver != "gd" && c.solver != "bfgs") throw Usage_error("--solver is gd or bfgs, not '" + c.solver + "'");
+  if(c.threads == 0) throw Usage_error("--threads must be at least 1");
+  if(c.schedule != "alternating" && c.schedule != "local" && c.schedule != "global")
+    throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
+  if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
+  const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
+  if(in == "mesh" ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
+    throw Usage_error(in == "mesh" ? "--output must end in .mesh or .vtu for a tetrahedral source"
+                                   : "--output must end in .off, .obj or .vtu");
+  if(in == "mesh" && c.target.empty())
+    throw Usage_error("a .mesh source needs --target (the start map)");
+  if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
+    throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
+  try {
+    DO::with_measure(c.measure, [](const auto&) { return 0; });
+  } catch(const DO::Invalid_input& e) {
+    throw Usage_error(std::string("--measure: ") + e.what());
+  }
+  check_files(c);
+  return c;
+}
+
+} // namespace distortion_optimizer
+
+#endif // DISTORTION_OPTIMIZER_COMMAND_LINE_H
