@@ -1,5 +1,7 @@
 // The command-line tool, run as a user would: its documented options, outputs and errors.
 
+#include "test_files.h"
+
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,7 +19,6 @@
 #include <sstream>
 #include <string>
 
-#include <dirent.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -49,20 +50,8 @@ std::string temp(const std::string& name)
   return ::testing::TempDir() + "distortion_cli_" + name;
 }
 
-bool exists(const std::string& path) { return std::ifstream(path).good(); }
-
-// The files a write of `path` may leave behind: its hidden temporaries (".name.XXXXXX...").
-std::size_t leftovers(const std::string& path)
-{
-  const std::size_t slash = path.find_last_of('/');
-  const std::string folder = path.substr(0, slash + 1), prefix = "." + path.substr(slash + 1) + ".";
-  std::size_t count = 0;
-  if(DIR* d = opendir(folder.c_str())) {
-    while(dirent* e = readdir(d)) count += std::string(e->d_name).rfind(prefix, 0) == 0;
-    closedir(d);
-  }
-  return count;
-}
+using test_files::exists;
+using test_files::leftovers;
 
 double json_value(const std::string& json, const std::string& key)
 {

@@ -1,6 +1,8 @@
 // Mesh files: the strict Medit reader, the Medit writer and the VTU writer, and what the OFF,
 // OBJ and Medit readers share (bounded lines and reserves, nothing left unread, clear messages).
 
+#include "test_files.h"
+
 #include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
@@ -27,7 +29,8 @@ namespace {
 
 std::string temp(const std::string& name) { return ::testing::TempDir() + "distortion_io_" + name; }
 
-bool exists(const std::string& path) { return std::ifstream(path).good(); }
+using test_files::exists;
+using test_files::leftovers;
 
 std::string contents(const std::string& path)
 {
@@ -110,7 +113,7 @@ TEST(Medit, WriteThenReadGivesTheSameSoup)
   const std::string path = temp("round_trip.mesh");
   const IO::Tetrahedron_soup s = two_tetrahedra();
   IO::write_MEDIT(path, s);
-  EXPECT_FALSE(exists(path + ".partial"));
+  EXPECT_EQ(leftovers(path), 0u);
   const IO::Tetrahedron_soup r = IO::read_tetrahedron_soup(path);
   EXPECT_EQ(r.points, s.points); // exact: 17 digits
   EXPECT_EQ(r.cells, s.cells);
@@ -148,7 +151,7 @@ TEST(Medit, WriterRejectsWhatTheReaderWouldRejectAndWritesNothing)
   s.points[4][2] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
   EXPECT_FALSE(exists(path));
-  EXPECT_FALSE(exists(path + ".partial"));
+  EXPECT_EQ(leftovers(path), 0u);
 }
 
 // sphere.mesh, written by CGAL (Vertices, Triangles, Tetrahedra, End). Its header says: 757
@@ -382,7 +385,7 @@ TEST(Vtu, TetrahedraWithCellArrays)
   const IO::Tetrahedron_soup s = two_tetrahedra();
   const double inf = std::numeric_limits<double>::infinity();
   IO::write_VTU(path, s.points, s.cells, {{"K", {1.25, inf}}, {"a<b & \"c\"", {-inf, 0.1}}});
-  EXPECT_FALSE(exists(path + ".partial"));
+  EXPECT_EQ(leftovers(path), 0u);
   const std::string xml = contents(path);
 
   EXPECT_EQ(xml.rfind("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\"", 0), 0u);
@@ -455,7 +458,7 @@ TEST(Vtu, RejectsBadInputAndWritesNothing)
   const std::vector<std::array<std::size_t, 3>> triangles = {{0, 1, 7}};
   EXPECT_EQ(message(s.points, triangles, {}), path + ": triangle 0 has vertex index 7 out of range");
   EXPECT_FALSE(exists(path));
-  EXPECT_FALSE(exists(path + ".partial"));
+  EXPECT_EQ(leftovers(path), 0u);
 }
 
 // ---------------------------------------------------------------------------------------------
