@@ -208,6 +208,21 @@ Matrix<n> random_well_conditioned()
   return with_singular_values<n>(s);
 }
 
+// dD/dJ by central differences of step h in each entry.
+template <int n, class Measure>
+Matrix<n> central_differences(const Measure& m, const Matrix<n>& J, double h)
+{
+  Matrix<n> fd;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      Matrix<n> Jp = J, Jm = J;
+      Jp(i, j) += h;
+      Jm(i, j) -= h;
+      fd(i, j) = (DO::internal::jacobian_distortion<n>(m, Jp) - DO::internal::jacobian_distortion<n>(m, Jm)) / (2 * h);
+    }
+  return fd;
+}
+
 template <int n>
 void check_gradient_against_finite_differences()
 {
@@ -216,15 +231,7 @@ void check_gradient_against_finite_differences()
       const Matrix<n> J = random_well_conditioned<n>();
       Matrix<n> dJ;
       DO::internal::jacobian_distortion<n>(m, J, dJ);
-      Matrix<n> fd;
-      const double h = 1e-6;
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j) {
-          Matrix<n> Jp = J, Jm = J;
-          Jp(i, j) += h;
-          Jm(i, j) -= h;
-          fd(i, j) = (DO::internal::jacobian_distortion<n>(m, Jp) - DO::internal::jacobian_distortion<n>(m, Jm)) / (2 * h);
-        }
+      const Matrix<n> fd = central_differences<n>(m, J, 1e-6);
       EXPECT_LE((dJ - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << "\nJ=\n" << J;
       // And the derivative in sigma itself.
       const Vector<n> s = DO::internal::signed_singular_values(J);
@@ -388,15 +395,7 @@ void check_untangling_barrier()
       Matrix<n> dJ;
       const double value = DO::internal::jacobian_distortion<n>(m, J, dJ);
       ASSERT_TRUE(std::isfinite(value)) << "J=\n" << J;
-      const double h = 1e-6 * std::max(eps, 1e-2);
-      Matrix<n> fd;
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j) {
-          Matrix<n> Jp = J, Jm = J;
-          Jp(i, j) += h;
-          Jm(i, j) -= h;
-          fd(i, j) = (DO::internal::jacobian_distortion<n>(m, Jp) - DO::internal::jacobian_distortion<n>(m, Jm)) / (2 * h);
-        }
+      const Matrix<n> fd = central_differences<n>(m, J, 1e-6 * std::max(eps, 1e-2));
       EXPECT_LE((dJ - fd).norm(), 1e-5 * std::max(1., fd.norm())) << "eps " << eps << " J=\n" << J;
       Matrix<n> a = Matrix<n>::Zero();
       DO::internal::Signed_svd<n> svd;
