@@ -231,7 +231,8 @@ void check_gradient_against_finite_differences()
       const Matrix<n> J = random_well_conditioned<n>();
       Matrix<n> dJ;
       DO::internal::jacobian_distortion<n>(m, J, dJ);
-      const Matrix<n> fd = central_differences<n>(m, J, 1e-6);
+      const double h = 1e-6;
+      const Matrix<n> fd = central_differences<n>(m, J, h);
       EXPECT_LE((dJ - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << "\nJ=\n" << J;
       // And the derivative in sigma itself.
       const Vector<n> s = DO::internal::signed_singular_values(J);
