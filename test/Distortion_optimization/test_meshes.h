@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +60,53 @@ typename Mesh::template Property_map<typename Mesh::Vertex_index, Point_2> make_
   for(auto v : m.vertices()) uv[v] = f(m.point(v));
   return uv;
 }
+
+// The target of every vertex, in vertex order.
+template <class Mesh, class UV>
+std::vector<Point_2> targets_of(const Mesh& mesh, const UV& uv)
+{
+  std::vector<Point_2> x;
+  for(auto v : mesh.vertices()) x.push_back(uv[v]);
+  return x;
+}
+
+using Map = std::function<Point_2(const Point_2&)>;
+
+// A 16 x 16 grid (512 triangles): border mapped by f, interior by f plus noise.
+struct Noisy_map
+{
+  Mesh2 mesh = planar_grid(16);
+  Mesh2::Property_map<Mesh2::Vertex_index, Point_2> uv;
+  Mesh2::Property_map<Mesh2::Vertex_index, Point_2> exact;
+
+  Noisy_map(const Map& f, double noise, unsigned seed = 1)
+  {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-noise, noise);
+    uv = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:uv").first;
+    exact = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:exact").first;
+    for(auto v : mesh.vertices()) {
+      const Point_2 p = mesh.point(v);
+      exact[v] = f(p);
+      uv[v] = mesh.is_border(v) ? f(p) : f(Point_2(p.x() + u(rng), p.y() + u(rng)));
+    }
+  }
+
+  std::vector<Point_2> targets() const { return targets_of(mesh, uv); }
+  double max_error() const
+  {
+    double e = 0;
+    for(auto v : mesh.vertices()) e = std::max(e, std::sqrt(CGAL::squared_distance(uv[v], exact[v])));
+    return e;
+  }
+  double diameter() const
+  {
+    double d = 0;
+    for(auto a : mesh.vertices())
+      for(auto b : mesh.vertices()) d = std::max(d, std::sqrt(CGAL::squared_distance(exact[a], exact[b])));
+    return d;
+  }
+};
 
 // Singular values of the 2x2 Jacobian of face f, computed from scratch: the face is put in its
 // own frame with plain arithmetic and s1, s2 follow from |J|^2 = s1^2 + s2^2 and det J = s1 s2.

@@ -23,43 +23,6 @@ using namespace test_meshes;
 
 namespace {
 
-using Map = std::function<Point_2(const Point_2&)>;
-
-// A 16 x 16 grid (512 triangles): border mapped by f, interior by f plus noise.
-struct Noisy_map
-{
-  Mesh2 mesh = planar_grid(16);
-  Mesh2::Property_map<Mesh2::Vertex_index, Point_2> uv;
-  Mesh2::Property_map<Mesh2::Vertex_index, Point_2> exact;
-
-  Noisy_map(const Map& f, double noise, unsigned seed = 1)
-  {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-noise, noise);
-    uv = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:uv").first;
-    exact = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:exact").first;
-    for(auto v : mesh.vertices()) {
-      const Point_2 p = mesh.point(v);
-      exact[v] = f(p);
-      uv[v] = mesh.is_border(v) ? f(p) : f(Point_2(p.x() + u(rng), p.y() + u(rng)));
-    }
-  }
-
-  double max_error() const
-  {
-    double e = 0;
-    for(auto v : mesh.vertices()) e = std::max(e, std::sqrt(CGAL::squared_distance(uv[v], exact[v])));
-    return e;
-  }
-  double diameter() const
-  {
-    double d = 0;
-    for(auto a : mesh.vertices())
-      for(auto b : mesh.vertices()) d = std::max(d, std::sqrt(CGAL::squared_distance(exact[a], exact[b])));
-    return d;
-  }
-};
-
 const Map rigid = [](const Point_2& p) {
   const double c = std::cos(0.6), s = std::sin(0.6);
   return Point_2(c * p.x() - s * p.y() + 3, s * p.x() + c * p.y() - 1);

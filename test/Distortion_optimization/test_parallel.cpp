@@ -40,12 +40,7 @@ struct Disk
     return CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(), np);
   }
 
-  std::vector<Point_2> map() const
-  {
-    std::vector<Point_2> x;
-    for(auto v : mesh.vertices()) x.push_back(uv[v]);
-    return x;
-  }
+  std::vector<Point_2> map() const { return targets_of(mesh, uv); }
 };
 
 } // namespace

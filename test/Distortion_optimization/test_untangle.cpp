@@ -9,35 +9,16 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
 
 using namespace test_meshes;
 
 namespace {
 
-using UV = Mesh2::Property_map<Mesh2::Vertex_index, Point_2>;
-
 // A 16 x 16 grid whose border is the identity and whose interior vertices moved by up to `noise`
 // (the spacing is 1/16): many triangles inverted.
-struct Tangled_grid
+struct Tangled_grid : Noisy_map
 {
-  Mesh2 mesh = planar_grid(16);
-  UV uv = mesh.add_property_map<Mesh2::Vertex_index, Point_2>("v:uv").first;
-  explicit Tangled_grid(double noise, unsigned seed)
-  {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-noise, noise);
-    for(auto v : mesh.vertices()) {
-      const Point_2 p = mesh.point(v);
-      uv[v] = mesh.is_border(v) ? p : Point_2(p.x() + u(rng), p.y() + u(rng));
-    }
-  }
-  std::vector<Point_2> targets() const
-  {
-    std::vector<Point_2> t;
-    for(auto v : mesh.vertices()) t.push_back(uv[v]);
-    return t;
-  }
+  explicit Tangled_grid(double noise, unsigned seed = 1) : Noisy_map([](const Point_2& p) { return p; }, noise, seed) {}
 };
 
 } // namespace

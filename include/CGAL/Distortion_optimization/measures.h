@@ -379,6 +379,14 @@ struct Untangling_barrier : measures_internal::Unbounded_measure
 
   std::string name() const { return "untangling_barrier"; }
 
+  // chi(D, eps) = (D + sqrt(eps^2 + D^2)) / 2, positive for every D, in a form without
+  // cancellation on either side of 0; e2 = eps^2 and root = sqrt(eps^2 + D^2).
+  template <class T>
+  static T regularized_determinant(const T& D, const T& e2, const T& root)
+  {
+    return D > 0. ? 0.5 * (D + root) : e2 / (2. * (root - D));
+  }
+
   template <int n, class T>
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
@@ -386,7 +394,7 @@ struct Untangling_barrier : measures_internal::Unbounded_measure
     const double theta = n == 2 ? theta_2 : theta_3, r = 1. / reference_det, rk = n == 2 ? r : std::cbrt(r * r);
     const T D = r * I.det, N = rk * I.norm2, e2 = lanes::broadcast<T>(epsilon * epsilon);
     const T root = lanes::sqrt(e2 + D * D);
-    const T chi = D > 0. ? 0.5 * (D + root) : e2 / (2. * (root - D));   // no cancellation on either side
+    const T chi = regularized_determinant(D, e2, root);
     const T chi_k = n == 2 ? chi : lanes::cbrt(chi) * lanes::cbrt(chi);
     const T f = N / chi_k, g = (D * D + 1.) / chi, dchi = chi / root;
     if(dI)
@@ -406,7 +414,7 @@ struct Untangling_barrier : measures_internal::Unbounded_measure
   double laplacian_weight(const Singular_values<n>& s) const
   {
     const double r = 1. / reference_det, D = r * s.prod(), e2 = epsilon * epsilon, root = std::sqrt(e2 + D * D);
-    const double chi = D > 0 ? 0.5 * (D + root) : e2 / (2 * (root - D));
+    const double chi = regularized_determinant(D, e2, root);
     return (1 - (n == 2 ? theta_2 : theta_3)) * (n == 2 ? r / chi : std::cbrt(r * r / (chi * chi)));
   }
   template <int n>

@@ -158,9 +158,8 @@ public:
     else for(std::size_t i = 0; i < count; ++i) e += change(i);
     if(!(e <= e0 + bound) || !(e0 - e > rounding * std::abs(e0))) return false;
     bool any_flipped = false;
-    if(!keep_valid_) {}
-    else if(on_workers) any_flipped = workers_.reduce(count, false, flipped, [](bool a, bool b) { return a || b; });
-    else for(std::size_t i = 0; i < count && !any_flipped; ++i) any_flipped = flipped(i);
+    if(keep_valid_ && on_workers) any_flipped = workers_.reduce(count, false, flipped, [](bool a, bool b) { return a || b; });
+    else if(keep_valid_) for(std::size_t i = 0; i < count && !any_flipped; ++i) any_flipped = flipped(i);
     if(any_flipped || !check()) return false;
     if(on_workers) workers_.for_each(count, 1024, commit);
     else for(std::size_t i = 0; i < count; ++i) commit(i);

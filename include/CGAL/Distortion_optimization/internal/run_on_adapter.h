@@ -26,7 +26,7 @@ Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measu
   Untangle_report untangled;
   if(options.untangle_first) {
     Options untangle_options = options;
-    untangle_options.iterations = 1000;
+    untangle_options.iterations = default_untangle_rounds;
     untangle_options.visitor = nullptr;
     untangled = untangle(problem, adapter.traits, untangle_options);
   }
@@ -39,14 +39,14 @@ Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measu
   return result;
 }
 
-// untangle(): number_of_iterations bounds the rounds (default 1000).
+// untangle(): number_of_iterations bounds the rounds.
 template <class Adapter, class TargetMap, class NamedParameters>
 Untangle_result untangle_adapted(Adapter& adapter, TargetMap target, const NamedParameters& np)
 {
   Optimization_problem<Adapter::dimension> problem = make_problem(adapter, np);
   Options options = read_options(np);
   options.iterations = CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
+    CGAL::parameters::get_parameter(np, CGAL::internal_np::number_of_iterations), default_untangle_rounds);
   const Untangle_report report = untangle(problem, adapter.traits, options);
   adapter.write_targets(target, problem.map.target, problem.is_free);
   Untangle_result result;

@@ -68,6 +68,8 @@ struct Simplicial_map
   }
 
   Matrix<n> jacobian(std::size_t c) const { return target_edges(c) * inverse_rest[c]; }
+  // det J_c, positive when the image keeps the source's orientation.
+  double jacobian_determinant(std::size_t c) const { return target_edges(c).determinant() * inverse_rest[c].determinant(); }
 
   // The gradients of the hat functions of cell c's vertices (columns): vertex_derivative of Dm^-T.
   Eigen::Matrix<double, n, n + 1> hat_gradients(std::size_t c) const

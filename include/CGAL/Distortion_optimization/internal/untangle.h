@@ -10,11 +10,11 @@
 // chi(D-, eps) = mu, i.e. eps = 2 sqrt(mu (mu - D-)) while D- < mu; so the worst cell's stand-in
 // determinant shrinks by at least 10% a round, faster when the round gained much.
 //
-// Unlike their L-BFGS, each round here is a few iterations of the package's own steps on the
-// package's own state, so every guarantee of the optimizer holds throughout: a cell that is valid
-// (positive, exact predicate) is never flipped or flattened, the set of valid cells only grows,
-// constrained vertices never move, and with the boundary guard the boundary never starts crossing
-// itself. The run stops as soon as every cell is valid; the regular measure takes over from there.
+// Unlike their L-BFGS, each round here is iterations of the package's own steps on the package's
+// own state: constrained vertices never move, and with the boundary guard the boundary never starts
+// crossing itself. While eps falls only the barrier keeps cells from folding; from its floor on, no
+// valid cell (exact predicate) is flipped or flattened any more. The run stops as soon as every
+// cell is valid; the regular measure takes over from there.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
@@ -39,14 +39,15 @@ struct Untangle_report
   bool stopped_by_visitor = false;
 };
 
-// det J_c of every cell (positive when the image keeps the source's orientation), in parallel.
+// The rounds untangle() and minimize_distortion(untangle_first) run at most by default.
+constexpr std::size_t default_untangle_rounds = 1000;
 
+// The smallest det J_c of the map, in parallel.
 template <int n>
 double smallest_jacobian_determinant(const Simplicial_map<n>& map, const Workers& workers)
 {
-  return workers.reduce(map.number_of_cells(), infinity, [&](std::size_t c) {
-    return map.target_edges(c).determinant() * map.inverse_rest[c].determinant();
-  }, [](double a, double b) { return std::min(a, b); });
+  return workers.reduce(map.number_of_cells(), infinity, [&](std::size_t c) { return map.jacobian_determinant(c); },
+                        [](double a, double b) { return std::min(a, b); });
 }
 
 // The map's typical det J: the ratio of its signed volume to the source's, or, for a map that is
@@ -56,7 +57,7 @@ double typical_jacobian_determinant(const Simplicial_map<n>& map)
 {
   double signed_sum = 0, absolute_sum = 0, volume = 0;
   for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
-    const double det = map.target_edges(c).determinant() * map.inverse_rest[c].determinant();
+    const double det = map.jacobian_determinant(c);
     signed_sum += map.rest_volume[c] * det;
     absolute_sum += map.rest_volume[c] * std::abs(det);
     volume += map.rest_volume[c];
@@ -124,7 +125,7 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     // into flat strips that no later round opens).
     const double worst = smallest_jacobian_determinant(problem.map, workers) / barrier.reference_det;
     const double e = barrier.epsilon, root = std::sqrt(e * e + worst * worst);
-    const double chi = worst > 0 ? 0.5 * (worst + root) : e * e / (2 * (root - worst));
+    const double chi = Untangling_barrier::regularized_determinant(worst, e * e, root);
     const double sigma = std::max(before > 0 ? 1 - energy / before : 0., 0.1), mu = (1 - sigma) * chi;
     barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
     if(report.inverted_after < fewest) {
