@@ -72,6 +72,10 @@ flattened (checked with exact predicates); the energy never increases.
     deterministic for a given number of threads.
   - `Distortion_optimization::parameters::parallel_sweep`: `INDEPENDENT_SETS` (default) or
     `PARTITION` (the paper's Algorithm 3), for more than one thread
+  - `Distortion_optimization::parameters::sliding_boundary`: a model of `SlidingSurface`
+    (`Distortion_optimization::Sphere_surface`, `Distortion_optimization::Triangle_surface` for
+    tetrahedral maps) on which the boundary vertices that are not constrained slide; then no
+    vertex is constrained by default. See sliding_surfaces.h.
   - `CGAL::parameters::visitor`: a callable `bool(std::size_t iteration, double energy)` called
     after each iteration; returning `false` stops the run with the map of that iteration
 
@@ -111,7 +115,8 @@ positive in the start map is ever inverted or flattened (exact predicates).
 \param np the named parameters of the triangle-mesh overload, with vertex maps keyed by
         `Vertex_handle`; `vertex_point_map` is not used (positions come from the triangulation).
         Default constraint: every vertex on the complex boundary (on a facet between a complex
-        cell and a cell outside the complex) is fixed. `CGAL::parameters::geom_traits` defaults to
+        cell and a cell outside the complex) is fixed, or, with `sliding_boundary`, slides on
+        the given surface. `CGAL::parameters::geom_traits` defaults to
         the kernel of the triangulation's points; its `Orientation_3` decides source and target
         orientations.
 */

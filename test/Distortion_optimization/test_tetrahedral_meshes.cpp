@@ -2,6 +2,7 @@
 // map of the paper's Fig. 5, start maps, write-back only to complex vertices.
 
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
+#include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/tetrahedralize_with_tetgen.h>
 #include <CGAL/Distortion_optimization/untangle.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
@@ -47,6 +48,19 @@ C3t3 mesh_sphere(double size)
 {
   namespace params = CGAL::parameters;
   Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(unit_sphere, K::Sphere_3(CGAL::ORIGIN, 4.));
+  Criteria criteria(params::facet_angle = 25, params::facet_size = size, params::facet_distance = size / 10,
+                    params::cell_radius_edge_ratio = 3, params::cell_size = size);
+  return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+}
+
+// The ellipsoid x^2 / a^2 + y^2 + z^2 <= 1 with a = 1.6: star-shaped about the origin, and far
+// enough from a ball that where its boundary lands on the sphere matters.
+double ellipsoid(const Point_3& p) { return CGAL::to_double(p.x() * p.x() / 2.56 + p.y() * p.y() + p.z() * p.z()) - 1.; }
+
+C3t3 mesh_ellipsoid(double size)
+{
+  namespace params = CGAL::parameters;
+  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(ellipsoid, K::Sphere_3(CGAL::ORIGIN, 9.));
   Criteria criteria(params::facet_angle = 25, params::facet_size = size, params::facet_distance = size / 10,
                     params::cell_radius_edge_ratio = 3, params::cell_size = size);
   return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
@@ -427,4 +441,83 @@ TEST(TetrahedralMeshes, BadInput)
     EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
   }
   EXPECT_EQ(storage, before);
+}
+
+// Paper Fig. 13's setting: a volume onto the ball with its boundary sliding on the sphere. Sliding
+// must reach a lower energy than the fixed boundary of the same start, keep every boundary vertex
+// on the sphere (to rounding) and never invert a cell, on one thread and two.
+TEST(TetrahedralMeshes, BoundarySlidingOnTheUnitSphere)
+{
+  const C3t3 c3t3 = mesh_ellipsoid(0.3);
+  Target_storage start;
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), Point_3(0, 0, 0));
+  ASSERT_EQ(inverted(c3t3, start), 0u);
+  const auto boundary = boundary_vertices(c3t3);
+
+  Target_storage fixed = start;
+  const auto f = CGAL::minimize_distortion(c3t3, Target_map(fixed), DO::Conformal_dilatation());
+  for(int threads : {1, 2}) {
+    Target_storage sliding = start;
+    const auto r = CGAL::minimize_distortion(c3t3, Target_map(sliding), DO::Conformal_dilatation(),
+                                             DO::parameters::sliding_boundary(DO::Sphere_surface(),
+                                               DO::parameters::number_of_threads(threads)));
+    EXPECT_EQ(r.inverted_cells, 0u);
+    EXPECT_EQ(inverted(c3t3, sliding), 0u);
+    EXPECT_LT(r.final_energy, f.final_energy - 0.05 * (f.final_energy - 1)) << threads << " threads";
+    std::size_t moved = 0;
+    for(Vertex_handle v : boundary) {
+      const Point_3& p = sliding.at(v);
+      EXPECT_NEAR(std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z())), 1., 1e-12);
+      moved += p != start.at(v);
+    }
+    EXPECT_GT(moved, boundary.size() / 2);
+  }
+}
+
+// A user surface (AABB tree): the boundary slides on the polyhedral boundary of the start map,
+// here the image of a TetGen cube under a shear, so the surface has corners and flat faces.
+// Constrained vertices stay where they were, to the bit.
+TEST(TetrahedralMeshes, BoundarySlidingOnATriangleSurface)
+{
+  const C3t3 c3t3 = tetgen_cube_complex(0.01);
+  const auto shear = [](const Point_3& p) { return Point_3(p.x() + 0.6 * p.y() * p.y(), p.y(), p.z() + 0.3 * p.x()); };
+  Target_storage start;
+  DO::map_vertices(c3t3, Target_map(start), shear);
+  std::vector<std::array<std::array<double, 3>, 3>> faces;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i))) {
+        std::array<std::array<double, 3>, 3> t;
+        for(int j = 1; j < 4; ++j) {
+          const Point_3& p = start.at(c->vertex((i + j) % 4));
+          t[j - 1] = {p.x(), p.y(), p.z()};
+        }
+        faces.push_back(t);
+      }
+  const DO::Triangle_surface surface(faces);
+  // The vertices at x = 1 stay fixed.
+  std::unordered_set<Vertex_handle> anchored;
+  for(Vertex_handle v : boundary_vertices(c3t3))
+    if(v->point().x() == 1) anchored.insert(v);
+  ASSERT_GT(anchored.size(), 4u);
+  auto is_anchored = boost::make_function_property_map<Vertex_handle>([&](Vertex_handle v) { return anchored.count(v) > 0; });
+
+  Target_storage sliding = start;
+  const auto r = CGAL::minimize_distortion(c3t3, Target_map(sliding), DO::Symmetric_dirichlet(),
+                                           DO::parameters::sliding_boundary(surface).vertex_is_constrained_map(is_anchored));
+  EXPECT_EQ(inverted(c3t3, sliding), 0u);
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  std::size_t moved = 0;
+  for(Vertex_handle v : boundary_vertices(c3t3)) {
+    const Point_3& p = sliding.at(v);
+    if(anchored.count(v)) {
+      EXPECT_EQ(p, start.at(v));
+      continue;
+    }
+    std::array<double, 3> normal;
+    const auto q = surface.project({p.x(), p.y(), p.z()}, normal);
+    EXPECT_LE(std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point_3(q[0], q[1], q[2])))), 1e-12);
+    moved += p != start.at(v);
+  }
+  EXPECT_GT(moved, 0u);
 }

@@ -72,6 +72,7 @@ enum number_of_threads_t { number_of_threads };
 enum parallel_sweep_t { parallel_sweep };
 enum preserve_global_injectivity_t { preserve_global_injectivity };
 enum untangle_first_t { untangle_first };
+enum sliding_boundary_t { sliding_boundary };
 } // namespace internal_np
 
 namespace parameters {
@@ -125,6 +126,17 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(preserve_global_injectivity_t, 
 /// (`Distortion_optimization::untangle()`), then minimize the measure from the untangled map.
 /// Default `false`: such a start is an error under a normalized measure.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(untangle_first_t, untangle_first)
+
+/// A model of `SlidingSurface` (`Sphere_surface`, `Triangle_surface`, see sliding_surfaces.h):
+/// boundary vertices that are not constrained move on this surface instead of staying where the
+/// start map put them (the paper's Fig. 13: a cube onto a ball, the boundary on the sphere). With
+/// it, `CGAL::parameters::vertex_is_constrained_map` defaults to no vertex, so that the whole
+/// boundary slides; the vertices it constrains stay fixed. A sliding vertex moves in the tangent
+/// plane and is projected back onto the surface; the move is kept only if the energy decreases
+/// and no valid cell of its ring inverts (exact predicates). The start's boundary vertices should
+/// lie on the surface (e.g. `star_shaped_to_unit_ball()` puts them on the unit sphere): a vertex
+/// off it is moved onto it by its first accepted move.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(sliding_boundary_t, sliding_boundary)
 
 #undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 

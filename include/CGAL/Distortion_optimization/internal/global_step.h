@@ -12,6 +12,9 @@
 //    0.9 times the exact largest step before a cell degenerates (per cell, det(Ds + t dDs) is a
 //    quadratic in 2D, a cubic in 3D: its smallest positive root), then backtracks (Armijo), and is
 //    accepted only if CGAL's exact orientation predicate sees no flipped cell.
+//  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
+//  planes and are projected back onto their surface at every trial; the harmonic start keeps
+//  them where they are.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
@@ -95,7 +98,14 @@ public:
   {
     if(system_.size() == 0) return false;
     std::vector<Vec> direction;
-    if(!system_.harmonic_targets(state_.targets(), direction)) return false;
+    if(p_.is_sliding.empty()) {
+      if(!system_.harmonic_targets(state_.targets(), direction)) return false;
+    } else {
+      std::vector<unsigned char> interior(p_.number_of_vertices());
+      for(std::size_t v = 0; v < interior.size(); ++v) interior[v] = p_.is_free[v] && !p_.slides(v);
+      Laplacian_system<n> system(p_, state_.workers(), &interior);
+      if(!system.harmonic_targets(state_.targets(), direction)) return false;
+    }
     for(std::size_t v = 0; v < direction.size(); ++v) direction[v] -= state_.targets()[v];
     // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
     // energy drops.
@@ -119,14 +129,35 @@ public:
     system_.solve(preconditioner, -g, x, 30, 1e-2);
     if(!x.allFinite()) return false;
     previous_solution_ = x;
-    double slope = 0;
-    for(int d = 0; d < n; ++d) slope += g.col(d).dot(x.col(d));
-    // P is positive definite (semi-definite with nothing fixed, g then in its range), so only a
-    // failed solve gets here.
-    if(!(slope < 0)) return false;
     std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
     for(std::size_t v = 0; v < direction.size(); ++v)
       if(system_.column(v) >= 0) direction[v] = x.row(system_.column(v)).transpose();
+    double slope = 0;
+    for(int d = 0; d < n; ++d) slope += g.col(d).dot(x.col(d));
+    const auto slope_of = [&] {
+      double s = 0;
+      for(std::size_t v = 0; v < direction.size(); ++v)
+        if(system_.column(v) >= 0) s += g.row(system_.column(v)).dot(direction[v].transpose());
+      return s;
+    };
+    if(!p_.is_sliding.empty()) {
+      // In the tangent planes the step may no longer descend: then the sliding vertices stay.
+      state_.workers().for_each(direction.size(), 1024, [&](std::size_t v) {
+        if(!p_.slides(v)) return;
+        Vec normal;
+        p_.slide(state_.targets()[v], normal);
+        direction[v] -= direction[v].dot(normal) * normal;
+      });
+      slope = slope_of();
+      if(!(slope < 0)) {
+        for(std::size_t v = 0; v < direction.size(); ++v)
+          if(p_.slides(v)) direction[v].setZero();
+        slope = slope_of();
+      }
+    }
+    // P is positive definite (semi-definite with nothing fixed, g then in its range), so only a
+    // failed solve gets here.
+    if(!(slope < 0)) return false;
     const double cap = last_t_ > 0 ? 2 * last_t_ : 1.;
     double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
     const bool moved = line_search(direction, t, slope);
@@ -185,7 +216,12 @@ private:
     auto* guard = state_.boundary_guard();
     const auto boundary_ok = [&] { return !guard || guard->is_injective(x); };
     for(int k = 0; k < 30 && t > 0; ++k, t *= 0.5) {
-      state_.workers().for_each(x.size(), 4096, [&](std::size_t v) { if(p_.is_free[v]) x[v] = x0[v] + t * direction[v]; });
+      state_.workers().for_each(x.size(), 4096, [&](std::size_t v) {
+        if(!p_.is_free[v]) return;
+        x[v] = x0[v] + t * direction[v];
+        Vec normal;
+        if(p_.slides(v) && direction[v] != Vec::Zero()) x[v] = p_.slide(x[v], normal);
+      });
       if(state_.accept_trial(moving.size(), moving_cell, e0, State::armijo * t * slope, true, boundary_ok)) {
         if(guard) guard->rebuild(x);
         return true;

@@ -40,15 +40,23 @@ public:
   static constexpr double harmonic_tolerance = 1e-10;
   static constexpr int harmonic_iterations = 2000;
 
-  Laplacian_system(const Optimization_problem<n>& problem, const Workers& workers) : p_(problem), workers_(workers)
+  // The unknowns are the problem's free vertices, or those marked in `unknowns` (the harmonic
+  // start keeps sliding vertices where they are).
+  Laplacian_system(const Optimization_problem<n>& problem, const Workers& workers,
+                   const std::vector<unsigned char>* unknowns = nullptr)
+    : p_(problem), workers_(workers)
   {
+    const std::vector<unsigned char>& is_unknown = unknowns ? *unknowns : p_.is_free;
     const std::size_t nv = p_.number_of_vertices();
     column_.assign(nv, -1);
     for(std::size_t v = 0; v < nv; ++v)
-      if(p_.is_free[v]) column_[v] = size_++;
+      if(is_unknown[v]) {
+        column_[v] = size_++;
+        column_vertex_.push_back(static_cast<std::uint32_t>(v));
+      }
     for(std::size_t c = 0; c < p_.map.number_of_cells(); ++c) {
       bool moves = false;
-      for(auto v : p_.map.cells[c]) moves = moves || p_.is_free[v];
+      for(auto v : p_.map.cells[c]) moves = moves || is_unknown[v];
       if(moves) moving_cells_.push_back(static_cast<std::uint32_t>(c));
     }
     build_pattern();
@@ -197,11 +205,10 @@ private:
     // Column by column from the rings, straight into compressed storage (no triplet list: it
     // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
     // their rows in parallel, each column into its own segment.
-    const std::vector<std::uint32_t> column_vertex = free_vertices(p_);   // column_'s inverse
     const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
       static thread_local std::vector<int> neighbours;
       neighbours.clear();
-      const std::uint32_t a = column_vertex[column];
+      const std::uint32_t a = column_vertex_[column];
       for(std::uint32_t k = p_.ring_begin[a]; k < p_.ring_begin[a + 1]; ++k)
         for(auto b : p_.map.cells[p_.ring[k].cell])
           if(column_[b] >= 0) neighbours.push_back(column_[b]);
@@ -262,6 +269,7 @@ private:
   const Optimization_problem<n>& p_;
   const Workers& workers_;
   std::vector<int> column_;
+  std::vector<std::uint32_t> column_vertex_;   // column_'s inverse
   int size_ = 0;
   std::vector<std::uint32_t> moving_cells_;
   // refill's blocks of moving cells, small enough for their parts to stay in the L2 cache, and

@@ -8,6 +8,11 @@
 // before some cell degenerates is exact: t_max = min over shrinking cells of vol / (-dvol/dt).
 // Trial steps stay below half of t_max and backtrack (Armijo); the state accepts a position only
 // if no valid cell of the ring flipped or flattened (exact orientation predicate).
+//
+// A sliding vertex (named parameter sliding_boundary) descends along its gradient's part in the
+// surface's tangent plane, and each trial position is projected back onto the surface: the volumes
+// are then no longer affine along the path, so the exact bound only sets the first trial, and the
+// state's exact check still decides.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
@@ -45,13 +50,19 @@ public:
   {
     Vec g;
     double e = ring_gradient(v, g);
+    const bool sliding = p_.slides(v);
+    if(sliding) {
+      Vec normal;
+      p_.slide(state_.targets()[v], normal);
+      g -= g.dot(normal) * normal;
+    }
     const double g2 = g.squaredNorm();
     if(!(g2 > 0) || !std::isfinite(g2)) return false;
 
     // First trial step: twice the last accepted one, or half the distance to the nearest ring
     // neighbour for a first visit (the paper leaves this open; it decides most of the cost).
     double t0 = last_step_[v] > 0 ? 2 * last_step_[v] : 0.5 * nearest_neighbour_distance(v) / std::sqrt(g2);
-    if(solver_ == Local_solver::GRADIENT_DESCENT) {
+    if(solver_ == Local_solver::GRADIENT_DESCENT || sliding) {
       const Vec d = -g;
       double t = std::min(t0, safety * max_step(v, d));
       if(!line_search(v, e, d, -g2, t)) return false;
@@ -139,6 +150,8 @@ private:
   {
     Vec& x = state_.targets()[v];
     const Vec x0 = x;
+    const bool sliding = p_.slides(v);
+    Vec normal;
     const std::uint32_t begin = p_.ring_begin[v], end = p_.ring_begin[v + 1];
     const auto ring_cell = [&](std::size_t i) { return p_.ring[begin + i].cell; };
     // A free boundary vertex under the guard also keeps the boundary free of self-intersections.
@@ -147,6 +160,7 @@ private:
     const auto boundary_ok = [&] { return !guarded || guard->accepts_move(v, state_.targets()); };
     for(int k = 0; k < max_backtracks && t > 0; ++k, t *= 0.5) {
       x = x0 + t * d;
+      if(sliding) x = p_.slide(x, normal);
       if(x == x0) break;   // the step no longer changes the position
       if(state_.accept_trial(end - begin, ring_cell, e0, State::armijo * t * slope, false, boundary_ok)) {
         if(guarded) guard->commit_move(v, state_.targets());

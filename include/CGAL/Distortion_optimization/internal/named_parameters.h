@@ -15,6 +15,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -87,8 +88,16 @@ std::vector<double> read_vertex_weights(const Adapter& adapter, const NamedParam
   return w;
 }
 
+template <class NamedParameters>
+constexpr bool has_sliding_boundary()
+{
+  return !std::is_same<decltype(CGAL::parameters::get_parameter(std::declval<const NamedParameters&>(),
+                                                                internal_np::sliding_boundary)),
+                       CGAL::internal_np::Param_not_found>::value;
+}
+
 // Which of the adapter's vertices are free: not in `vertex_is_constrained_map`, or, without it,
-// not on the boundary (the mesh's border, the complex's boundary).
+// not on the boundary (the mesh's border, the complex's boundary), unless the boundary slides.
 template <class Adapter, class NamedParameters>
 std::vector<unsigned char> read_free_vertices(const Adapter& adapter, const NamedParameters& np)
 {
@@ -96,11 +105,37 @@ std::vector<unsigned char> read_free_vertices(const Adapter& adapter, const Name
   std::vector<unsigned char> is_free(adapter.vertex_of.size());
   for(std::size_t i = 0; i < is_free.size(); ++i) {
     if constexpr(std::is_same<decltype(constrained), CGAL::internal_np::Param_not_found>::value)
-      is_free[i] = !adapter.on_boundary[i];
+      is_free[i] = has_sliding_boundary<NamedParameters>() || !adapter.on_boundary[i];
     else
       is_free[i] = !get(constrained, adapter.vertex_of[i]);
   }
   return is_free;
+}
+
+// With `sliding_boundary`: the free boundary vertices slide on that surface, which sees the user's
+// coordinates (the adapter's map is scaled by a power of two, undone exactly around the call).
+template <class Adapter, class NamedParameters>
+void read_sliding_boundary(const Adapter& adapter, const NamedParameters& np, Optimization_problem<Adapter::dimension>& problem)
+{
+  constexpr int n = Adapter::dimension;
+  if constexpr(has_sliding_boundary<NamedParameters>()) {
+    const auto surface = CGAL::parameters::get_parameter(np, internal_np::sliding_boundary);
+    problem.is_sliding.assign(adapter.vertex_of.size(), 0);
+    for(std::size_t i = 0; i < problem.is_sliding.size(); ++i)
+      problem.is_sliding[i] = problem.is_free[i] && adapter.on_boundary[i];
+    const double scale = adapter.scale;
+    problem.slide = [surface, scale](const Vector<n>& x, Vector<n>& normal) {
+      std::array<double, n> p, u;
+      for(int k = 0; k < n; ++k) p[k] = x[k] / scale;
+      const std::array<double, n> y = surface.project(p, u);
+      Vector<n> z;
+      for(int k = 0; k < n; ++k) {
+        z[k] = y[k] * scale;
+        normal[k] = u[k];
+      }
+      return z;
+    };
+  }
 }
 
 // The problem of an adapter's map (moved out of the adapter, which keeps its handles) with the
@@ -111,6 +146,7 @@ Optimization_problem<Adapter::dimension> make_problem(Adapter& adapter, const Na
   Optimization_problem<Adapter::dimension> problem;
   problem.omega = read_vertex_weights(adapter, np);
   problem.is_free = read_free_vertices(adapter, np);
+  read_sliding_boundary(adapter, np, problem);
   problem.map = std::move(adapter.map);
   problem.finalize(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cell_weighting),
                                                       Cell_weighting::AVERAGE_VOLUME));

@@ -13,6 +13,7 @@
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,13 @@ struct Optimization_problem
   double total_weight = 0;                 // sum_c w(c)
   std::vector<std::uint32_t> ring_begin;   // ring of v: ring[ring_begin[v] .. ring_begin[v+1])
   std::vector<Incidence> ring;
+  // A sliding boundary (named parameter sliding_boundary): these free vertices move on a surface;
+  // slide(x, normal) is its closest point to x, and sets the unit normal there. Empty: none.
+  std::vector<unsigned char> is_sliding;
+  std::function<Vector<n>(const Vector<n>&, Vector<n>&)> slide;
 
   std::size_t number_of_vertices() const { return map.number_of_vertices(); }
+  bool slides(std::size_t v) const { return !is_sliding.empty() && is_sliding[v]; }
 
   // Call once map, omega (may be empty) and is_free are set.
   void finalize(Cell_weighting weighting)

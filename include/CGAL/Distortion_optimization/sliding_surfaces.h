@@ -1,0 +1,165 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Surfaces on which boundary vertices slide (named parameter `sliding_boundary`): the paper's
+// Fig. 13 maps a cube onto a ball with the boundary kept on the sphere, not fixed where the start
+// map put it. A surface only answers one question, the closest point to a position and the unit
+// normal there; the optimizer moves a sliding vertex in the tangent plane and projects it back.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_SLIDING_SURFACES_H
+#define CGAL_DISTORTION_OPTIMIZATION_SLIDING_SURFACES_H
+
+#include <CGAL/Distortion_optimization/errors.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+A sphere (a circle for planar maps) as a sliding surface, with an exact-to-rounding projection:
+the default unit sphere centred at the origin is the boundary of the image of
+`star_shaped_to_unit_ball()`.
+
+It is a model of the concept `SlidingSurface`: `project(x, normal)` returns the point of the
+surface closest to `x` (an `std::array<double, d>`, d = 2 or 3) and sets `normal` to the unit
+outward normal there. A model must be callable concurrently from several threads.
+*/
+class Sphere_surface
+{
+public:
+  /// The unit sphere centred at the origin.
+  Sphere_surface() = default;
+  /// The sphere of the given centre (its first d coordinates are used) and radius > 0.
+  /// \throws Invalid_input unless the radius is positive and everything is finite.
+  Sphere_surface(const std::array<double, 3>& center, double radius) : center_(center), radius_(radius)
+  {
+    if(!(radius > 0) || !std::isfinite(radius) || !std::isfinite(center[0] + center[1] + center[2]))
+      throw Invalid_input("a sliding sphere needs a finite centre and a finite positive radius");
+  }
+
+  /// The closest point of the sphere to `x` and the outward unit normal there (for `x` at the
+  /// centre, where every point is closest: the point in the direction of the first axis).
+  template <std::size_t d>
+  std::array<double, d> project(const std::array<double, d>& x, std::array<double, d>& normal) const
+  {
+    static_assert(d == 2 || d == 3, "a sphere in the plane or in space");
+    double r2 = 0;
+    for(std::size_t i = 0; i < d; ++i) {
+      normal[i] = x[i] - center_[i];
+      r2 += normal[i] * normal[i];
+    }
+    const double r = std::sqrt(r2);
+    if(!(r > 0)) {
+      normal.fill(0.);
+      normal[0] = 1;
+    } else {
+      for(double& u : normal) u /= r;
+    }
+    std::array<double, d> y;
+    for(std::size_t i = 0; i < d; ++i) y[i] = center_[i] + radius_ * normal[i];
+    return y;
+  }
+
+private:
+  std::array<double, 3> center_ = {0., 0., 0.};
+  double radius_ = 1.;
+};
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+A closed triangle surface as a sliding surface, a model of `SlidingSurface` in 3D: closest points
+from an AABB tree of its triangles (built once, with its distance-query acceleration, so that
+queries can run on several threads), and as normal the unit normal of the closest triangle. The
+surface is copied: the mesh it was made from may change or go away.
+*/
+class Triangle_surface
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Triangles = std::vector<K::Triangle_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+
+public:
+  /// The surface of the given triangles (each as three points, `std::array<double, 3>`).
+  /// \throws Invalid_input for no triangle, a degenerate one or a non-finite coordinate.
+  explicit Triangle_surface(const std::vector<std::array<std::array<double, 3>, 3>>& triangles)
+    : triangles_(std::make_shared<Triangles>())
+  {
+    if(triangles.empty()) throw Invalid_input("a sliding surface needs at least one triangle");
+    triangles_->reserve(triangles.size());
+    for(const auto& t : triangles) {
+      for(const auto& p : t)
+        if(!std::isfinite(p[0] + p[1] + p[2]))
+          throw Invalid_input("triangle " + std::to_string(triangles_->size()) + " of the sliding surface has a non-finite coordinate");
+      triangles_->emplace_back(K::Point_3(t[0][0], t[0][1], t[0][2]), K::Point_3(t[1][0], t[1][1], t[1][2]),
+                               K::Point_3(t[2][0], t[2][1], t[2][2]));
+      if(triangles_->back().is_degenerate())
+        throw Invalid_input("triangle " + std::to_string(triangles_->size() - 1) + " of the sliding surface is degenerate");
+    }
+    tree_ = std::make_shared<Tree>(triangles_->begin(), triangles_->end());
+    tree_->accelerate_distance_queries();
+  }
+
+  /// The surface of the faces of a triangle mesh (a `FaceListGraph`); named parameter
+  /// `CGAL::parameters::vertex_point_map` (default `get(CGAL::vertex_point, tm)`), whose points
+  /// have `x()`, `y()`, `z()` convertible with `CGAL::to_double`.
+  /// \throws Invalid_input as above, or for a face that is not a triangle.
+  template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  static Triangle_surface from_mesh(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                        get_const_property_map(CGAL::vertex_point, tm));
+    std::vector<std::array<std::array<double, 3>, 3>> triangles;
+    for(auto f : faces(tm)) {
+      std::array<std::array<double, 3>, 3> t;
+      std::size_t k = 0;
+      for(auto v : vertices_around_face(halfedge(f, tm), tm)) {
+        if(k == 3) throw Invalid_input("a face of the sliding surface is not a triangle");
+        const auto& p = get(vpm, v);
+        t[k++] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      }
+      if(k != 3) throw Invalid_input("a face of the sliding surface is not a triangle");
+      triangles.push_back(t);
+    }
+    return Triangle_surface(triangles);
+  }
+
+  /// The closest point of the surface to `x` and the unit normal of its triangle (oriented by
+  /// the triangle's vertex order).
+  std::array<double, 3> project(const std::array<double, 3>& x, std::array<double, 3>& normal) const
+  {
+    const auto hit = tree_->closest_point_and_primitive(K::Point_3(x[0], x[1], x[2]));
+    const K::Triangle_3& t = *hit.second;
+    const K::Vector_3 u = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double length = std::sqrt(u.squared_length());
+    normal = {u.x() / length, u.y() / length, u.z() / length};
+    return {hit.first.x(), hit.first.y(), hit.first.z()};
+  }
+
+  /// The number of triangles.
+  std::size_t size() const { return triangles_->size(); }
+
+private:
+  // Shared, so that copies (the named parameter is taken by value) share one tree.
+  std::shared_ptr<Triangles> triangles_;
+  std::shared_ptr<Tree> tree_;
+};
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_SLIDING_SURFACES_H
