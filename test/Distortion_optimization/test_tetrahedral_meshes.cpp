@@ -521,3 +521,34 @@ TEST(TetrahedralMeshes, BoundarySlidingOnATriangleSurface)
   }
   EXPECT_GT(moved, 0u);
 }
+
+// A torus is not star-shaped about a point of its tube: the ball map must refuse it, name a cell
+// and leave the target alone. The radial map of Table 1 keeps the unit sphere.
+TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
+{
+  namespace params = CGAL::parameters;
+  const auto torus = [](const Point_3& p) {
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    const double rho = std::sqrt(x * x + y * y) - 1;
+    return rho * rho + z * z - 0.16;
+  };
+  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(torus, K::Sphere_3(CGAL::ORIGIN, 4.));
+  Criteria criteria(params::facet_angle = 25, params::facet_size = 0.2, params::facet_distance = 0.02,
+                    params::cell_radius_edge_ratio = 3, params::cell_size = 0.2);
+  const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  Target_storage ball;
+  try {
+    DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(1, 0, 0));
+    ADD_FAILURE() << "a torus was mapped onto the ball";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("not star-shaped about the centre: the ball map inverts or flattens cell"), std::string::npos)
+      << e.what();
+  }
+  EXPECT_TRUE(ball.empty());
+
+  const C3t3 sphere = mesh_sphere(0.4);
+  Target_storage radial_start;
+  DO::radial_map(sphere, Target_map(radial_start), Point_3(0, 0, 0));
+  for(const auto& [v, q] : radial_start)
+    EXPECT_EQ(q, radial(v->point().point()));
+}

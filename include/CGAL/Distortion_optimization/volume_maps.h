@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Start maps for the tetrahedra of a Mesh_complex_3_in_triangulation_3: a user function (e.g. the
-// radial map x |x| of the paper's Fig. 5), a star-shaped domain onto the unit ball, and the
-// harmonic map for fixed boundary targets. Targets are property maps keyed by Vertex_handle; only
+// Start maps for the tetrahedra of a Mesh_complex_3_in_triangulation_3: a user function, the
+// radial map x |x| of the paper's Table 1 and Fig. 5, a star-shaped domain onto the unit ball, and
+// the harmonic map for fixed boundary targets. Targets are property maps keyed by Vertex_handle; only
 // vertices of cells in the complex are written.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_VOLUME_MAPS_H
@@ -20,7 +20,10 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <cmath>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -41,18 +44,38 @@ void map_vertices(const C3T3& c3t3, TargetMap target, const Function& f)
 }
 
 /// \ingroup PkgDistortionOptimizationRef
+/// The radial map of the paper's Table 1 and Fig. 5 about `center`: `p` goes to
+/// `(p - center) |p - center|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the
+/// unit sphere and shrinks the inside). Injective on any domain, but with a conformal distortion
+/// that grows without bound towards the centre: a hard start for the optimizer.
+template <class C3T3, class TargetMap, class Point_3>
+void radial_map(const C3T3& c3t3, TargetMap target, const Point_3& center)
+{
+  map_vertices(c3t3, target, [&](const Point_3& p) {
+    const auto u = p - center;
+    const double r = std::sqrt(CGAL::to_double(u.squared_length()));
+    return Point_3(r * CGAL::to_double(u.x()), r * CGAL::to_double(u.y()), r * CGAL::to_double(u.z()));
+  });
+}
+
+/// \ingroup PkgDistortionOptimizationRef
 /// Maps a domain star-shaped about `center` onto the unit ball centred at the origin: the point
 /// `center + r u` (|u| = 1) goes to `(r / R(u)) u`, where `R(u)` is the distance from `center` to
 /// the complex boundary along `u` (found by ray casting in an AABB tree of the boundary facets);
 /// boundary vertices land on the unit sphere. This is the radial construction of Naitsat, Saucan
-/// and Zeevi, "Geometry-based distortion measures ...", section 4.4.
-/// \throws Invalid_input if `center` is not strictly inside the domain or a ray misses the boundary.
+/// and Zeevi, "Geometry-based distortion measures ...", section 4.4. The map is checked before
+/// anything is written: every cell must keep its orientation (exact predicate).
+/// \throws Invalid_input if `center` is not strictly inside the domain, a ray misses the
+/// boundary, or the domain is not star-shaped about `center` (the message names the first cell
+/// the map inverts: try another centre, or untangle the map with `untangle()`). `target` is then
+/// unchanged.
 template <class C3T3, class TargetMap, class Point_3>
 void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3& center)
 {
   using K = typename Kernel_traits<Point_3>::Kernel;
   using Triangle = typename K::Triangle_3;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, typename std::vector<Triangle>::const_iterator>>>;
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
   const auto& tr = c3t3.triangulation();
   auto point = tr.geom_traits().construct_point_3_object();
   std::vector<Triangle> boundary;
@@ -62,7 +85,8 @@ void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3&
         boundary.emplace_back(point(tr.point(c, (i + 1) % 4)), point(tr.point(c, (i + 2) % 4)), point(tr.point(c, (i + 3) % 4)));
   if(boundary.empty()) throw Invalid_input("the complex has no boundary facet");
   Tree tree(boundary.begin(), boundary.end());
-  map_vertices(c3t3, target, [&](const Point_3& p) {
+  std::unordered_map<Vertex_handle, Point_3> image;
+  map_vertices(c3t3, boost::associative_property_map<std::unordered_map<Vertex_handle, Point_3>>(image), [&](const Point_3& p) {
     const auto u = p - center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
     if(r == 0) return Point_3(0, 0, 0);
@@ -78,6 +102,13 @@ void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3&
     const double s = 1. / R;
     return Point_3(s * CGAL::to_double(u.x()), s * CGAL::to_double(u.y()), s * CGAL::to_double(u.z()));
   });
+  std::size_t index = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++index)
+    if(CGAL::orientation(image.at(c->vertex(0)), image.at(c->vertex(1)), image.at(c->vertex(2)), image.at(c->vertex(3))) !=
+       CGAL::POSITIVE)
+      throw Invalid_input("the domain is not star-shaped about the centre: the ball map inverts or flattens cell " +
+                          std::to_string(index) + " of the complex; choose another centre, or untangle the map (untangle())");
+  for(const auto& [v, p] : image) put(target, v, p);
 }
 
 /// \ingroup PkgDistortionOptimizationRef
