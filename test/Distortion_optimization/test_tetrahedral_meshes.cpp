@@ -194,13 +194,25 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   // (Tetrahedra with four vertices on the cube's surface near its edges can flatten: the radial
   // construction does not promise a valid map, only a start to repair.)
   Target_storage ball;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, 0.02, 0.03));
+  const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, 0.02, 0.03));
+  EXPECT_EQ(flat, inverted(c3t3, ball));
   const auto boundary = boundary_vertices(c3t3);
   for(const auto& kv : ball) {
     const Point_3& q = kv.second;
     const double r = std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z()));
     if(boundary.count(kv.first)) EXPECT_NEAR(r, 1., 1e-9);
     else EXPECT_LT(r, 1.);
+  }
+  // Those cells are repaired by untangling with the boundary sliding on the sphere (Fig. 13).
+  ASSERT_GT(flat, 0u);
+  const auto u = CGAL::minimize_distortion(c3t3, Target_map(ball), DO::Symmetric_dirichlet(),
+                                           DO::parameters::untangle_first(true, DO::parameters::sliding_boundary(DO::Sphere_surface())));
+  EXPECT_EQ(u.inverted_start_cells, flat);
+  EXPECT_EQ(u.inverted_cells, 0u);
+  EXPECT_EQ(inverted(c3t3, ball), 0u);
+  for(Vertex_handle v : boundary) {
+    const Point_3& q = ball.at(v);
+    EXPECT_NEAR(std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z())), 1., 1e-12);
   }
 }
 
@@ -541,8 +553,16 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
     DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(1, 0, 0));
     ADD_FAILURE() << "a torus was mapped onto the ball";
   } catch(const DO::Invalid_input& e) {
-    EXPECT_NE(std::string(e.what()).find("not star-shaped about the centre: the ball map inverts or flattens cell"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("not star-shaped about the centre: the boundary facet of cell"), std::string::npos)
       << e.what();
+  }
+  EXPECT_TRUE(ball.empty());
+  // The centre of the hole is outside the domain.
+  try {
+    DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0, 0, 0));
+    ADD_FAILURE() << "a centre outside the domain was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("not strictly inside"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(ball.empty());
 

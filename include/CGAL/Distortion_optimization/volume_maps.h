@@ -22,6 +22,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
@@ -43,6 +44,30 @@ void map_vertices(const C3T3& c3t3, TargetMap target, const Function& f)
       if(done.insert(c->vertex(i)).second) put(target, c->vertex(i), f(point(tr.point(c, i))));
 }
 
+namespace internal {
+
+// Whether p is in a cell of the complex and on no facet of its boundary (exact predicates).
+template <class C3T3, class Point_3>
+bool is_strictly_inside(const C3T3& c3t3, const Point_3& p)
+{
+  const auto& tr = c3t3.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    bool inside = true;
+    for(int i = 0; i < 4 && inside; ++i) {
+      // p replaces vertex i: the facet opposite i sees p on the cell's side, or p is on it.
+      std::array<Point_3, 4> q;
+      for(int j = 0; j < 4; ++j) q[j] = j == i ? p : Point_3(point(tr.point(c, j)));
+      const CGAL::Orientation o = CGAL::orientation(q[0], q[1], q[2], q[3]);
+      inside = o == CGAL::POSITIVE || (o == CGAL::ZERO && c3t3.is_in_complex(c->neighbor(i)));
+    }
+    if(inside) return true;
+  }
+  return false;
+}
+
+} // namespace internal
+
 /// \ingroup PkgDistortionOptimizationRef
 /// The radial map of the paper's Table 1 and Fig. 5 about `center`: `p` goes to
 /// `(p - center) |p - center|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the
@@ -63,14 +88,21 @@ void radial_map(const C3T3& c3t3, TargetMap target, const Point_3& center)
 /// `center + r u` (|u| = 1) goes to `(r / R(u)) u`, where `R(u)` is the distance from `center` to
 /// the complex boundary along `u` (found by ray casting in an AABB tree of the boundary facets);
 /// boundary vertices land on the unit sphere. This is the radial construction of Naitsat, Saucan
-/// and Zeevi, "Geometry-based distortion measures ...", section 4.4. The map is checked before
-/// anything is written: every cell must keep its orientation (exact predicate).
-/// \throws Invalid_input if `center` is not strictly inside the domain, a ray misses the
-/// boundary, or the domain is not star-shaped about `center` (the message names the first cell
-/// the map inverts: try another centre, or untangle the map with `untangle()`). `target` is then
-/// unchanged.
+/// and Zeevi, "Geometry-based distortion measures ...", section 4.4. The domain must be
+/// star-shaped about `center`: `center` on the inner side of the plane of every boundary facet
+/// (exact predicates), checked before anything is written.
+///
+/// Even then the map is not always valid: near a sharp edge of the domain, a tetrahedron whose four
+/// vertices are on the boundary, on both sides of the edge, can come out flat or inverted (the
+/// edge is rounded onto the sphere). Their number is returned; `CGAL::minimize_distortion()` with
+/// `Distortion_optimization::parameters::untangle_first(true)` repairs them.
+/// \returns the number of cells of the complex the map inverts or flattens (exact predicate)
+/// \throws Invalid_input if `center` is not strictly inside the domain, or the domain is not
+/// star-shaped about it (the message names the first boundary facet that faces `center`; another
+/// centre, or untangling a map built otherwise, e.g. the radial map, are the remedies). `target`
+/// is then unchanged.
 template <class C3T3, class TargetMap, class Point_3>
-void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3& center)
+std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3& center)
 {
   using K = typename Kernel_traits<Point_3>::Kernel;
   using Triangle = typename K::Triangle_3;
@@ -78,11 +110,21 @@ void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3&
   using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
   const auto& tr = c3t3.triangulation();
   auto point = tr.geom_traits().construct_point_3_object();
+  if(!internal::is_strictly_inside(c3t3, center))
+    throw Invalid_input("the centre of the ball map is not strictly inside the domain");
   std::vector<Triangle> boundary;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  std::size_t index = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++index)
     for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i)))
-        boundary.emplace_back(point(tr.point(c, (i + 1) % 4)), point(tr.point(c, (i + 2) % 4)), point(tr.point(c, (i + 3) % 4)));
+      if(!c3t3.is_in_complex(c->neighbor(i))) {
+        const Point_3 a = point(tr.point(c, (i + 1) % 4)), b = point(tr.point(c, (i + 2) % 4)), d = point(tr.point(c, (i + 3) % 4));
+        // Star-shaped about the centre: it sees every boundary facet from the cell's side.
+        if(CGAL::orientation(a, b, d, center) != CGAL::orientation(a, b, d, Point_3(point(tr.point(c, i)))))
+          throw Invalid_input("the domain is not star-shaped about the centre: the boundary facet of cell " +
+                              std::to_string(index) + " of the complex faces it; choose another centre, or start "
+                              "from another map (e.g. radial_map()) and untangle it (untangle())");
+        boundary.emplace_back(a, b, d);
+      }
   if(boundary.empty()) throw Invalid_input("the complex has no boundary facet");
   Tree tree(boundary.begin(), boundary.end());
   std::unordered_map<Vertex_handle, Point_3> image;
@@ -102,13 +144,12 @@ void star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3&
     const double s = 1. / R;
     return Point_3(s * CGAL::to_double(u.x()), s * CGAL::to_double(u.y()), s * CGAL::to_double(u.z()));
   });
-  std::size_t index = 0;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++index)
-    if(CGAL::orientation(image.at(c->vertex(0)), image.at(c->vertex(1)), image.at(c->vertex(2)), image.at(c->vertex(3))) !=
-       CGAL::POSITIVE)
-      throw Invalid_input("the domain is not star-shaped about the centre: the ball map inverts or flattens cell " +
-                          std::to_string(index) + " of the complex; choose another centre, or untangle the map (untangle())");
+  std::size_t inverted = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    inverted += CGAL::orientation(image.at(c->vertex(0)), image.at(c->vertex(1)), image.at(c->vertex(2)),
+                                  image.at(c->vertex(3))) != CGAL::POSITIVE;
   for(const auto& [v, p] : image) put(target, v, p);
+  return inverted;
 }
 
 /// \ingroup PkgDistortionOptimizationRef
