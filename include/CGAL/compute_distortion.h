@@ -24,15 +24,16 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// Evaluates an adapter's map (Triangle_mesh_adapter or C3t3_adapter) with the named parameters'
-// vertex weights, writing per-cell values to the optional cell_distortion_map.
+// Evaluates an adapter's map (Triangle_mesh_adapter or C3t3_adapter) with the given weights of the
+// map's vertices, writing per-cell values to the named parameters' optional cell_distortion_map.
 template <class Adapter, class Measure, class NamedParameters>
-Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np)
+Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np,
+                                       const std::vector<double>& vertex_weights)
 {
   auto cell_map = CGAL::parameters::get_parameter(np, internal_np::cell_distortion_map);
   constexpr bool wants_cells = !std::is_same<decltype(cell_map), CGAL::internal_np::Param_not_found>::value;
   std::vector<double> per_cell;
-  Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, read_vertex_weights(adapter, np),
+  Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, vertex_weights,
                                          wants_cells ? &per_cell : nullptr);
   // Volume-weighted energies in the user's units: the adapter scaled coordinates (coordinate_scale).
   const double volume_unit = std::pow(1. / adapter.scale, Adapter::dimension);
@@ -56,8 +57,16 @@ Each face's Jacobian is computed in the face's own frame (eq. 20 of the paper; f
 `Point_2` source, in the plane itself), its signed singular values give the measure's value
 (eq. 21), and the values are averaged with the weights of eq. 23.
 
+The target may also be a `Point_3` (a surface-to-surface map, e.g. a surface carried through a
+volume map by `Distortion_optimization::carry_surface()`): each target triangle is then measured in
+its own plane, as the source triangles of a surface are, so that the Jacobian is the 2 x 2 map
+between the two triangles' planes. Such a map has no orientation: `inverted_cells` is always 0, and
+a flat (zero-area) target triangle has the measure's value on a flat cell (+infinity for a
+normalized measure). Only this function accepts `Point_3` targets for a triangle mesh
+(`minimize_distortion()` does not compile with them).
+
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam TargetMap a model of `ReadablePropertyMap` from vertex descriptors to a `Point_2`
+\tparam TargetMap a model of `ReadablePropertyMap` from vertex descriptors to a `Point_2` or a `Point_3`
 \tparam Measure a model of `DistortionMeasure` (see `measures.h`), e.g.
         `Distortion_optimization::Conformal_dilatation`
 \tparam NamedParameters a sequence of named parameters
@@ -76,7 +85,8 @@ Each face's Jacobian is computed in the face's own frame (eq. 20 of the paper; f
 
 \returns the weighted means, energies, extreme values and the number of inverted faces (counted
 with exact orientation predicates: a face is inverted when its image's orientation differs from
-the source's; surface faces count as positively oriented in their own frames).
+the source's; surface faces count as positively oriented in their own frames; always 0 for
+`Point_3` targets).
 
 \throws Distortion_optimization::Invalid_input for an empty mesh, a face that is not a triangle,
 non-finite coordinates or weights, a degenerate source face, or a non-finite Jacobian.
@@ -87,8 +97,14 @@ std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::valu
 compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measure& measure,
                    const NamedParameters& np = parameters::default_values())
 {
-  const auto adapter = Distortion_optimization::internal::make_triangle_mesh_adapter(tm, target, np);
-  return Distortion_optimization::internal::evaluate_adapted(adapter, measure, np);
+  namespace DOI = Distortion_optimization::internal;
+  const auto adapter = DOI::make_triangle_mesh_adapter(tm, target, np, std::true_type());
+  Distortion_optimization::Distortion_statistics stats =
+    DOI::evaluate_adapted(adapter, measure, np, adapter.map_vertex_weights(DOI::read_vertex_weights(adapter, np)));
+  // A triangle measured in its own plane has no orientation to lose: its frame makes det J >= 0,
+  // and a flat image would only be counted for being flat.
+  if constexpr(std::decay_t<decltype(adapter)>::per_corner) stats.inverted_cells = 0;
+  return stats;
 }
 
 /*!
@@ -106,7 +122,8 @@ compute_distortion(const C3T3& c3t3, const TargetMap& target, const Measure& mea
                    const NamedParameters& np = parameters::default_values())
 {
   const auto adapter = Distortion_optimization::internal::make_c3t3_adapter(c3t3, target, np);
-  return Distortion_optimization::internal::evaluate_adapted(adapter, measure, np);
+  return Distortion_optimization::internal::evaluate_adapted(adapter, measure, np,
+                                                             Distortion_optimization::internal::read_vertex_weights(adapter, np));
 }
 
 } // namespace CGAL

@@ -5,6 +5,9 @@
 // Point_3) and a target map (Point_2) into the flat arrays of Simplicial_map<2>, and writes the
 // targets back. Everything a solver must not have to check is checked here, with the geometric
 // traits' (exact) predicates.
+// A Point_3 target (a surface-to-surface map, e.g. a surface carried through a volume map) is
+// accepted for measuring only: each target triangle is then expressed in its own 2D frame, as
+// source triangles of a surface are, so the map gets one vertex per face corner.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TRIANGLE_MESH_ADAPTER_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TRIANGLE_MESH_ADAPTER_H
@@ -23,13 +26,15 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-template <class TriangleMesh, class VertexPointMap, class GeomTraits>
+template <class TriangleMesh, class VertexPointMap, class GeomTraits, int TargetDimension = 2>
 class Triangle_mesh_adapter
 {
   using GT = boost::graph_traits<TriangleMesh>;
@@ -40,10 +45,16 @@ public:
   using face_descriptor = typename GT::face_descriptor;
   using Source_point = typename boost::property_traits<VertexPointMap>::value_type;
   static constexpr int source_dimension = CGAL::Ambient_dimension<Source_point>::value;
+  static constexpr int target_dimension = TargetDimension;
+  // Whether the map has one vertex per face corner (Point_3 targets, each triangle in its own
+  // frame): map vertex 3c + k is then corner k of cell c, and vertex_of[corner_vertex[3c + k]] its
+  // mesh vertex. Such a map has no orientation (no inverted cells) and cannot be optimized.
+  static constexpr bool per_corner = TargetDimension == 3;
   using Geom_traits = GeomTraits;
 
   Simplicial_map<2> map;
   std::vector<vertex_descriptor> vertex_of;  // vertex index -> vertex
+  std::vector<typename Simplicial_map<2>::Index> corner_vertex;   // per_corner only: map vertex -> vertex index
   std::vector<face_descriptor> cell_of;      // cell index -> face
   std::vector<unsigned char> on_boundary;    // border vertices: the default constraints
   GeomTraits traits;
@@ -54,31 +65,38 @@ public:
     : traits(gt)
   {
     static_assert(source_dimension == 2 || source_dimension == 3, "source points must be Point_2 or Point_3");
+    static_assert(target_dimension == 2 || target_dimension == 3, "target points must be Point_2 or Point_3");
     if(num_faces(tm) == 0)
       throw Invalid_input("the mesh has no face");
     auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
     std::vector<Vector<source_dimension>> source;
+    std::vector<Vector<target_dimension>> targets;   // per_corner: the 3D targets, framed per face below
+    auto& target_of_vertex = [&]() -> std::vector<Vector<target_dimension>>& {
+      if constexpr(per_corner) return targets; else return map.target;
+    }();
     for(vertex_descriptor v : vertices(tm)) {
       put(index, v, vertex_of.size());
       const auto& q = get(target, v);
-      Vector<2> x(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+      Vector<target_dimension> x;
+      if constexpr(per_corner) x << CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z());
+      else x << CGAL::to_double(q.x()), CGAL::to_double(q.y());
       if(!x.allFinite())
         throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite target coordinate");
       source.push_back(to_vector(get(vpm, v)));
       if(!source.back().allFinite())
         throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite source coordinate");
-      map.target.push_back(x);
+      target_of_vertex.push_back(x);
       vertex_of.push_back(v);
       on_boundary.push_back(CGAL::is_border(v, tm) ? 1 : 0);
     }
     double largest = 0;
     for(std::size_t i = 0; i < source.size(); ++i)
-      largest = std::max({largest, source[i].cwiseAbs().maxCoeff(), map.target[i].cwiseAbs().maxCoeff()});
+      largest = std::max({largest, source[i].cwiseAbs().maxCoeff(), target_of_vertex[i].cwiseAbs().maxCoeff()});
     scale = coordinate_scale(largest);
     if(scale != 1)
       for(std::size_t i = 0; i < source.size(); ++i) {
         source[i] *= scale;
-        map.target[i] *= scale;
+        target_of_vertex[i] *= scale;
       }
     for(face_descriptor f : faces(tm)) {
       const std::size_t c = cell_of.size();
@@ -92,15 +110,39 @@ public:
       const int sign = source_orientation(p, q, r);
       if(sign == 0)
         throw Invalid_input("source face " + std::to_string(c) + " is degenerate (zero area)");
+      if constexpr(per_corner) {
+        const Matrix<2> Ds = target_frame_edges(targets[cell[1]] - targets[cell[0]], targets[cell[2]] - targets[cell[0]]);
+        map.target.push_back(Vector<2>::Zero());
+        map.target.push_back(Ds.col(0));
+        map.target.push_back(Ds.col(1));
+        for(int k = 0; k < 3; ++k) {
+          corner_vertex.push_back(cell[k]);
+          cell[k] = static_cast<typename Simplicial_map<2>::Index>(3 * c + k);
+        }
+      }
       map.add_cell(cell, rest_edges(p, q, r), sign);
       cell_of.push_back(f);
     }
+  }
+
+  // The weights of the map's vertices from those of the mesh's (read_vertex_weights: per vertex of
+  // vertex_of): the same unless per_corner, where each corner has its vertex's.
+  std::vector<double> map_vertex_weights(std::vector<double> w) const
+  {
+    if constexpr(per_corner)
+      if(!w.empty()) {
+        std::vector<double> corners(corner_vertex.size());
+        for(std::size_t k = 0; k < corners.size(); ++k) corners[k] = w[corner_vertex[k]];
+        return corners;
+      }
+    return w;
   }
 
   // Writes the targets x of the free vertices into the target map.
   template <class TargetMap>
   void write_targets(TargetMap target, const std::vector<Vector<2>>& x, const std::vector<unsigned char>& is_free) const
   {
+    static_assert(!per_corner, "only Point_2 targets are written back");
     using Point_2 = typename boost::property_traits<TargetMap>::value_type;
     for(std::size_t i = 0; i < vertex_of.size(); ++i)
       if(is_free[i]) put(target, vertex_of[i], Point_2(x[i][0] / scale, x[i][1] / scale));
@@ -129,6 +171,18 @@ private:
     }
   }
 
+  // A target triangle of R^3 in its own frame, as a source triangle (triangle_frame_edges, so that
+  // det J >= 0), also when its first edge has zero length: a flat image is a flat cell (det J = 0,
+  // the measure's value there), never a non-finite Jacobian.
+  static Matrix<2> target_frame_edges(const Vector<3>& e1, const Vector<3>& e2)
+  {
+    if(e1.norm() > 0) return triangle_frame_edges(e1, e2);
+    Matrix<2> Ds;
+    Ds << 0., e2.norm(),
+          0., 0.;
+    return Ds;
+  }
+
   static Matrix<2> rest_edges(const Vector<source_dimension>& p, const Vector<source_dimension>& q,
                               const Vector<source_dimension>& r)
   {
@@ -143,17 +197,35 @@ private:
   }
 };
 
+// 3 for target points with a z() coordinate (Point_3), 2 otherwise (Point_2).
+template <class Point, class = void>
+struct Target_dimension : std::integral_constant<int, 2> {};
+template <class Point>
+struct Target_dimension<Point, std::void_t<decltype(std::declval<const Point&>().z())>> : std::integral_constant<int, 3> {};
+
+template <class TargetMap>
+constexpr int target_dimension_of()
+{
+  return Target_dimension<std::decay_t<typename boost::property_traits<TargetMap>::value_type>>::value;
+}
+
 // The adapter for the source positions named by `vertex_point_map` (default: the mesh's points)
-// and the predicates of `geom_traits` (default: the kernel of those points).
-template <class TriangleMesh, class TargetMap, class NamedParameters>
-auto make_triangle_mesh_adapter(const TriangleMesh& tm, const TargetMap& target, const NamedParameters& np)
+// and the predicates of `geom_traits` (default: the kernel of those points), for a Point_2 target
+// map (Point_3 too if measuring_only: compute_distortion).
+template <class TriangleMesh, class TargetMap, class NamedParameters, bool measuring_only = false>
+auto make_triangle_mesh_adapter(const TriangleMesh& tm, const TargetMap& target, const NamedParameters& np,
+                                std::integral_constant<bool, measuring_only> = {})
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  constexpr int target_dimension = target_dimension_of<TargetMap>();
+  static_assert(target_dimension == 2 || (measuring_only && target_dimension == 3),
+                "a triangle mesh's target map must give Point_2; a Point_3 target (a surface-to-surface map) "
+                "can be measured by CGAL::compute_distortion(), not optimized or untangled");
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   using GT = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
   const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
-  return Triangle_mesh_adapter<TriangleMesh, decltype(vpm), GT>(tm, vpm, target, gt);
+  return Triangle_mesh_adapter<TriangleMesh, decltype(vpm), GT, target_dimension>(tm, vpm, target, gt);
 }
 
 } // namespace internal
