@@ -65,6 +65,13 @@ struct Optimization_problem
       cell_weight[c] = omega_sum * incidence_weight[c];
       total_weight += cell_weight[c];
     }
+    build_rings();
+  }
+
+  // The rings, from the map's cells.
+  void build_rings()
+  {
+    const std::size_t nv = map.number_of_vertices(), nc = map.number_of_cells();
     ring_begin.assign(nv + 1, 0);
     for(const auto& cell : map.cells)
       for(auto i : cell) ++ring_begin[i + 1];
@@ -76,6 +83,47 @@ struct Optimization_problem
         ring[fill[map.cells[c][i]]++] = Incidence{static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i)};
   }
 };
+
+// The part of a problem made of the cells with a vertex in `region`: those vertices keep their
+// freedom (and sliding), the other vertices of these cells are fixed; weights are the problem's.
+// Vertex i of the part is vertex global[i] of the problem. The part's energy differs from the
+// problem's by a constant (the cells left out do not move).
+template <int n>
+Optimization_problem<n> part_of(const Optimization_problem<n>& p, const std::vector<unsigned char>& region,
+                                std::vector<std::uint32_t>& global)
+{
+  Optimization_problem<n> part;
+  std::vector<std::int64_t> local(p.number_of_vertices(), -1);
+  global.clear();
+  for(std::size_t c = 0; c < p.map.number_of_cells(); ++c) {
+    bool inside = false;
+    for(auto v : p.map.cells[c]) inside = inside || region[v];
+    if(!inside) continue;
+    typename Simplicial_map<n>::Cell cell;
+    for(int i = 0; i <= n; ++i) {
+      const auto v = p.map.cells[c][i];
+      if(local[v] < 0) {
+        local[v] = static_cast<std::int64_t>(global.size());
+        global.push_back(v);
+        part.map.target.push_back(p.map.target[v]);
+        part.omega.push_back(p.omega[v]);
+        part.is_free.push_back(region[v] && p.is_free[v]);
+        if(!p.is_sliding.empty()) part.is_sliding.push_back(region[v] && p.is_sliding[v]);
+      }
+      cell[i] = static_cast<typename Simplicial_map<n>::Index>(local[v]);
+    }
+    part.map.cells.push_back(cell);
+    part.map.inverse_rest.push_back(p.map.inverse_rest[c]);
+    part.map.rest_volume.push_back(p.map.rest_volume[c]);
+    part.map.rest_sign.push_back(p.map.rest_sign[c]);
+    part.incidence_weight.push_back(p.incidence_weight[c]);
+    part.cell_weight.push_back(p.cell_weight[c]);
+    part.total_weight += p.cell_weight[c];
+  }
+  part.slide = p.slide;
+  part.build_rings();
+  return part;
+}
 
 // The free vertices in increasing order (the global step numbers its unknowns in this order).
 template <int n>

@@ -66,14 +66,16 @@ double typical_jacobian_determinant(const Simplicial_map<n>& map)
   return std::isfinite(typical) && typical > 0 ? typical : 1.;
 }
 
-// Untangles problem.map in place. options.iterations bounds the rounds (values of eps); a round
+// Untangles problem.map in place (the whole map; untangle() below first tries the tangle's
+// surroundings). options.iterations bounds the rounds (values of eps); a round
 // runs the schedule's iterations until one gains less than 1e-5 of the barrier, at most 200; the
 // visitor is called after each round with the round and the number of cells still inverted, and
 // may stop the run there. Throws Invalid_input, with the map unchanged, when some inverted cell
 // has only constrained vertices, or when the rounds end with inverted cells (no injective map may
 // exist with these constraints).
 template <int n, class GeomTraits>
-Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, Options options)
+Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const GeomTraits& traits, Options options,
+                                    bool throw_on_failure = true)
 {
   const auto start = std::chrono::steady_clock::now();
   const Workers workers(options.threads);
@@ -146,13 +148,81 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     if(rounds_without_progress >= 20) break;
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if(report.inverted_after > 0 && !report.stopped_by_visitor) {
+  if(report.inverted_after > 0 && !report.stopped_by_visitor && !throw_on_failure) {
+    // The map with the fewest inverted cells: a start for a wider attempt.
+    problem.map.target = best_targets;
+    report.inverted_after = fewest;
+  } else if(report.inverted_after > 0 && !report.stopped_by_visitor) {
     const std::size_t still = report.inverted_after;
     problem.map.target = start_targets;
     throw Invalid_input("untangling failed: " + std::to_string(still) + " of " + std::to_string(report.inverted_before) +
                         " inverted or flat cells remain after " + std::to_string(report.iterations) +
                         " rounds; the constraints may admit no injective map");
   }
+  return report;
+}
+
+// Untangles problem.map in place, as untangle_everywhere(). A few inverted cells in a large map
+// (the tangles of a deformation, the flat cells a ball map leaves along the sharp edges of a
+// domain) are first untangled in the part of the map within one ring of them, a problem the size
+// of the tangle, then within two and three rings of those still inverted, each attempt starting
+// from the best map of the last; the whole map only if cells remain inverted. Not with the
+// boundary guard, which must see the whole boundary.
+template <int n, class GeomTraits>
+Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const auto inverted_vertices = [&](std::vector<unsigned char>& region) {
+    std::size_t inverted = 0;
+    region.assign(problem.number_of_vertices(), 0);
+    for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c)
+      if(is_inverted(problem.map, c, traits)) {
+        ++inverted;
+        for(auto v : problem.map.cells[c]) region[v] = 1;
+      }
+    return inverted;
+  };
+  std::vector<unsigned char> region;
+  Untangle_report report;
+  report.inverted_before = report.inverted_after = inverted_vertices(region);
+  if(report.inverted_before == 0 || options.global_injectivity || 20 * report.inverted_before > problem.map.number_of_cells())
+    return untangle_everywhere(problem, traits, options);
+  const std::vector<Vector<n>> start_targets = problem.map.target;
+  for(int rings = 1; rings <= 3 && report.inverted_after > 0; ++rings) {
+    if(rings > 1) inverted_vertices(region);
+    for(int k = 0; k < rings; ++k) {
+      // One more ring: every vertex of a cell that touches the region.
+      std::vector<unsigned char> grown = region;
+      for(const auto& cell : problem.map.cells) {
+        bool touches = false;
+        for(auto v : cell) touches = touches || region[v];
+        if(touches)
+          for(auto v : cell) grown[v] = 1;
+      }
+      region.swap(grown);
+    }
+    std::vector<std::uint32_t> global;
+    Optimization_problem<n> part = part_of(problem, region, global);
+    if(2 * part.map.number_of_cells() > problem.map.number_of_cells()) break;   // hardly smaller than the map
+    const Untangle_report r = untangle_everywhere(part, traits, options, false);
+    for(std::size_t i = 0; i < global.size(); ++i) problem.map.target[global[i]] = part.map.target[i];
+    report.iterations += r.iterations;
+    report.inverted_after = r.inverted_after;
+    report.stopped_by_visitor = r.stopped_by_visitor;
+    if(r.stopped_by_visitor) break;
+  }
+  if(report.inverted_after > 0 && !report.stopped_by_visitor) {
+    try {
+      const Untangle_report r = untangle_everywhere(problem, traits, options);
+      report.iterations += r.iterations;
+      report.inverted_after = r.inverted_after;
+      report.stopped_by_visitor = r.stopped_by_visitor;
+    } catch(const Invalid_input&) {
+      problem.map.target = start_targets;
+      throw;
+    }
+  }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
 
