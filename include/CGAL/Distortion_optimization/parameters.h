@@ -77,6 +77,8 @@ enum sliding_boundary_t { sliding_boundary };
 
 namespace parameters {
 
+// Defines the named parameter NAME for the tag internal_np::TAG; the headers with their own
+// parameters (mesh_interior.h, volumetric_texture.h) use it too, in this namespace.
 #define CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(TAG, NAME)                           \
   template <class T, class NP = CGAL::parameters::Default_named_parameters>                  \
   CGAL::Named_function_parameters<T, internal_np::TAG, NP>                                   \
@@ -137,8 +139,6 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(untangle_first_t, untangle_firs
 /// lie on the surface (e.g. `star_shaped_to_unit_ball()` puts them on the unit sphere): a vertex
 /// off it is moved onto it by its first accepted move.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(sliding_boundary_t, sliding_boundary)
-
-#undef CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER
 
 } // namespace parameters
 } // namespace Distortion_optimization

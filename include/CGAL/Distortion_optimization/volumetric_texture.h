@@ -17,6 +17,7 @@
 #define CGAL_DISTORTION_OPTIMIZATION_VOLUMETRIC_TEXTURE_H
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -58,12 +59,7 @@ namespace parameters {
 /// `bool`, for `embed_in_volume()`: snap the points that lie outside the volume to its closest
 /// point (on the boundary of the complex) instead of throwing `Points_outside_volume`; default
 /// `false`.
-template <class T, class NP = CGAL::parameters::Default_named_parameters>
-CGAL::Named_function_parameters<T, internal_np::snap_to_volume_t, NP>
-snap_to_volume(const T& value, const NP& np = CGAL::parameters::default_values())
-{
-  return CGAL::Named_function_parameters<T, internal_np::snap_to_volume_t, NP>(value, np);
-}
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(snap_to_volume_t, snap_to_volume)
 
 } // namespace parameters
 

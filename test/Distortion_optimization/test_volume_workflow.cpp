@@ -1,0 +1,430 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// From a closed surface to an optimized volume map: mesh_interior() on real closed surfaces of
+// libcgal-demo and on generated ones (valid complexes, boundary on the surface, sharp corners
+// kept, sizes that follow the input's scale, determinism, bad input), then the package's start
+// maps and optimizer on the result.
+
+#include <CGAL/Distortion_optimization/mesh_interior.h>
+#include <CGAL/Distortion_optimization/volume_maps.h>
+#include <CGAL/compute_distortion.h>
+#include <CGAL/minimize_distortion.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <boost/property_map/property_map.hpp>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace {
+
+namespace DO = CGAL::Distortion_optimization;
+namespace DOP = CGAL::Distortion_optimization::parameters;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Surface = CGAL::Surface_mesh<Point>;
+using C3t3 = DO::Interior_mesh<K>::C3T3;
+using Tr = C3t3::Triangulation;
+using Vertex_handle = Tr::Vertex_handle;
+using Targets = std::unordered_map<Vertex_handle, Point>;
+using Target_map = boost::associative_property_map<Targets>;
+
+// A closed surface of libcgal-demo's data.tar.gz, extracted once into the test's temporary
+// directory (through a directory of this process and a rename, so that tests running at the same
+// time never read a half-written file); an empty mesh when the tarball is not installed.
+Surface demo_surface(const std::string& name)
+{
+  namespace fs = std::filesystem;
+  static const char* tarballs[] = {"/usr/share/doc/libcgal-dev/data.tar.gz", "/usr/share/doc/libcgal-demo/data.tar.gz"};
+  const fs::path dir = fs::path(::testing::TempDir()) / "volume_workflow_data";
+  const fs::path path = dir / name;
+  std::error_code error;
+  for(const char* tarball : tarballs) {
+    if(fs::exists(path)) break;
+    if(!fs::exists(tarball)) continue;
+    const fs::path mine = dir / ("extract." + std::to_string(::getpid()));
+    fs::create_directories(mine, error);
+    const std::string command = "tar -xzf '" + std::string(tarball) + "' -C '" + mine.string() + "' 'data/meshes/" + name + "'";
+    if(std::system(command.c_str()) == 0) fs::rename(mine / "data" / "meshes" / name, path, error);
+    fs::remove_all(mine, error);
+  }
+  Surface mesh;
+  if(!fs::exists(path) || !CGAL::IO::read_polygon_mesh(path.string(), mesh)) return Surface();
+  return mesh;
+}
+
+#define DEMO_SURFACE(variable, name)                                                  \
+  const Surface variable = demo_surface(name);                                        \
+  if(variable.is_empty()) GTEST_SKIP() << name << " of libcgal-demo's data.tar.gz is not installed"
+
+Point position(const C3t3& c3t3, Tr::Cell_handle c, int i)
+{
+  const Tr& tr = c3t3.triangulation();
+  return tr.geom_traits().construct_point_3_object()(tr.point(c, i));
+}
+
+std::size_t non_positive_cells(const C3t3& c3t3)
+{
+  std::size_t count = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(CGAL::orientation(position(c3t3, c, 0), position(c3t3, c, 1), position(c3t3, c, 2), position(c3t3, c, 3)) !=
+       CGAL::POSITIVE) ++count;
+  return count;
+}
+
+double complex_volume(const C3t3& c3t3)
+{
+  double v = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    v += CGAL::volume(position(c3t3, c, 0), position(c3t3, c, 1), position(c3t3, c, 2), position(c3t3, c, 3));
+  return v;
+}
+
+// The points of the cells in the complex, in the complex's order: equal lists mean equal meshes.
+std::vector<Point> cell_points(const C3t3& c3t3)
+{
+  std::vector<Point> points;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i) points.push_back(position(c3t3, c, i));
+  return points;
+}
+
+std::size_t inverted(const C3t3& c3t3, const Targets& target)
+{
+  std::size_t count = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(CGAL::orientation(target.at(c->vertex(0)), target.at(c->vertex(1)), target.at(c->vertex(2)),
+                         target.at(c->vertex(3))) != CGAL::POSITIVE) ++count;
+  return count;
+}
+
+Point volume_centroid(const C3t3& c3t3)
+{
+  double v = 0, x = 0, y = 0, z = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    const double w = CGAL::volume(position(c3t3, c, 0), position(c3t3, c, 1), position(c3t3, c, 2), position(c3t3, c, 3));
+    const Point g = CGAL::centroid(position(c3t3, c, 0), position(c3t3, c, 1), position(c3t3, c, 2), position(c3t3, c, 3));
+    v += w;
+    x += w * g.x();
+    y += w * g.y();
+    z += w * g.z();
+  }
+  return Point(x / v, y / v, z / v);
+}
+
+double diagonal(const Surface& s)
+{
+  const CGAL::Bbox_3 b = PMP::bbox(s);
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+}
+
+// The boundary of the complex against the input surface: its vertices on the surface (up to
+// rounding), the circumcentres of its facets within `facet_distance` (Mesh_3's criterion, which
+// bounds their distance to a point of the surface). Returns the largest circumcentre distance
+// divided by facet_distance.
+double check_boundary_on_surface(const C3t3& c3t3, const Surface& surface, double facet_distance)
+{
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Surface>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  Tree tree(faces(surface).first, faces(surface).second, surface);
+  const double tolerance = 1e-9 * diagonal(surface);
+  double worst = 0;
+  std::size_t facets = 0;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f, ++facets) {
+    Point p[3];
+    for(int k = 0; k < 3; ++k) {
+      p[k] = position(c3t3, f->first, (f->second + 1 + k) % 4);
+      EXPECT_LE(std::sqrt(tree.squared_distance(p[k])), tolerance);
+    }
+    worst = (std::max)(worst, std::sqrt(tree.squared_distance(CGAL::circumcenter(p[0], p[1], p[2]))) / facet_distance);
+  }
+  EXPECT_GT(facets, 0u);
+  return worst;
+}
+
+Surface icosahedron(double radius)
+{
+  Surface s;
+  CGAL::make_icosahedron(s, Point(0.3 * radius, -0.2 * radius, 0.1 * radius), radius);
+  return s;
+}
+
+Surface triangulated_cube()
+{
+  Surface s;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                        Point(0, 1, 1), Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), s);
+  PMP::triangulate_faces(s);
+  return s;
+}
+
+// Expects Invalid_input whose message contains `part`.
+template <class Function>
+void expect_invalid(const Function& f, const std::string& part)
+{
+  try {
+    f();
+    ADD_FAILURE() << "no exception; expected one about: " << part;
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+
+TEST(VolumeWorkflow, RealSurfaceGivesPositiveCellsWithTheBoundaryOnTheSurface)
+{
+  // blobby.off: 2027 vertices, smooth, not convex.
+  DEMO_SURFACE(blobby, "blobby.off");
+  const Surface before = blobby;
+  const DO::Interior_mesh_sizes defaults = DO::interior_mesh_sizes(blobby);
+  const double h = 2 * defaults.cell_size;   // coarse: about 3.10^3 tetrahedra
+  const C3t3 c3t3 = DO::mesh_interior(blobby, DOP::cell_size(h));
+  const DO::Interior_mesh_sizes sizes = DO::interior_mesh_sizes(blobby, DOP::cell_size(h));
+  EXPECT_EQ(sizes.facet_size, h);
+  EXPECT_EQ(sizes.facet_distance, h / 10);
+  EXPECT_GT(c3t3.number_of_cells_in_complex(), 1500u);
+  EXPECT_LT(c3t3.number_of_cells_in_complex(), 8000u);
+  EXPECT_EQ(non_positive_cells(c3t3), 0u);
+  EXPECT_LE(check_boundary_on_surface(c3t3, blobby, sizes.facet_distance), 1.);
+  EXPECT_NEAR(complex_volume(c3t3), defaults.volume, 0.05 * defaults.volume);
+  // The input is untouched.
+  ASSERT_EQ(blobby.number_of_vertices(), before.number_of_vertices());
+  for(auto v : blobby.vertices()) EXPECT_EQ(blobby.point(v), before.point(v));
+}
+
+TEST(VolumeWorkflow, DefaultSizesFollowTheScaleOfTheInput)
+{
+  // The same icosahedron at two scales 10^6 apart: the same number of tetrahedra (about 3.10^4),
+  // within the documented range.
+  std::vector<std::size_t> cells;
+  for(double radius : {1e-3, 1e3}) {
+    const Surface s = icosahedron(radius);
+    const C3t3 c3t3 = DO::mesh_interior(s);
+    cells.push_back(c3t3.number_of_cells_in_complex());
+    EXPECT_GT(cells.back(), 10000u) << radius;
+    EXPECT_LT(cells.back(), 100000u) << radius;
+    EXPECT_EQ(non_positive_cells(c3t3), 0u);
+    EXPECT_NEAR(complex_volume(c3t3), DO::interior_mesh_sizes(s).volume, 0.03 * complex_volume(c3t3));
+  }
+  EXPECT_NEAR(double(cells[0]), double(cells[1]), 0.05 * cells[1]);
+}
+
+TEST(VolumeWorkflow, CubeKeepsItsCornersAndEdges)
+{
+  const Surface cube = triangulated_cube();
+  const C3t3 c3t3 = DO::mesh_interior(cube, DOP::cell_size(0.2));
+  EXPECT_EQ(non_positive_cells(c3t3), 0u);
+  EXPECT_NEAR(complex_volume(c3t3), 1., 1e-9);   // exact: flat faces and protected edges
+  std::vector<Point> corners;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    if(v->in_dimension() == 0) corners.push_back(c3t3.triangulation().geom_traits().construct_point_3_object()(v->point()));
+  EXPECT_EQ(corners.size(), 8u);
+  for(auto v : cube.vertices()) EXPECT_NE(std::find(corners.begin(), corners.end(), cube.point(v)), corners.end()) << cube.point(v);
+  EXPECT_LE(check_boundary_on_surface(c3t3, cube, DO::interior_mesh_sizes(cube, DOP::cell_size(0.2)).facet_distance), 1.);
+  // 180 degrees protects no edge: the corners are not kept as such.
+  const C3t3 smooth = DO::mesh_interior(cube, DOP::cell_size(0.2, DOP::sharp_edge_angle(180.)));
+  EXPECT_EQ(smooth.number_of_corners(), 0u);
+  EXPECT_EQ(non_positive_cells(smooth), 0u);
+}
+
+TEST(VolumeWorkflow, VertexPointMapGivesThePositions)
+{
+  // The positions come from a property map (here the icosahedron moved by 10 along x), not from
+  // the mesh's points.
+  Surface s = icosahedron(1);
+  auto moved = s.add_property_map<Surface::Vertex_index, Point>("v:moved").first;
+  for(auto v : s.vertices()) moved[v] = s.point(v) + K::Vector_3(10, 0, 0);
+  const C3t3 c3t3 = DO::mesh_interior(s, DOP::cell_size(0.3, CGAL::parameters::vertex_point_map(moved)));
+  ASSERT_GT(c3t3.number_of_cells_in_complex(), 0u);
+  EXPECT_EQ(non_positive_cells(c3t3), 0u);
+  for(const Point& p : cell_points(c3t3)) EXPECT_GT(p.x(), 8.);
+  // Named by the map's positions too: a NaN there is reported.
+  moved[Surface::Vertex_index(5)] = Point(std::numeric_limits<double>::infinity(), 0, 0);
+  expect_invalid([&] { DO::mesh_interior(s, CGAL::parameters::vertex_point_map(moved)); },
+                 "vertex 5 has a non-finite coordinate");
+}
+
+TEST(VolumeWorkflow, TwoRunsGiveTheSameComplex)
+{
+  DEMO_SURFACE(elephant, "elephant.off");   // with 153 sharp corners at 60 degrees
+  const auto np = DOP::cell_size(3 * DO::interior_mesh_sizes(elephant).cell_size);
+  const C3t3 a = DO::mesh_interior(elephant, np);
+  const C3t3 b = DO::mesh_interior(elephant, np);
+  ASSERT_GT(a.number_of_cells_in_complex(), 0u);
+  EXPECT_TRUE(cell_points(a) == cell_points(b));
+  // With Mesh_3's optimizers too (they run without time limit).
+  DEMO_SURFACE(blob, "blob-closed.off");
+  const auto optimized = DOP::odt_iterations(3, DOP::perturb_slivers(true, DOP::exude_slivers(true,
+                         DOP::cell_size(3 * DO::interior_mesh_sizes(blob).cell_size))));
+  const C3t3 c = DO::mesh_interior(blob, optimized);
+  const C3t3 d = DO::mesh_interior(blob, optimized);
+  EXPECT_EQ(non_positive_cells(c), 0u);
+  EXPECT_TRUE(cell_points(c) == cell_points(d));
+  EXPECT_FALSE(cell_points(c) == cell_points(DO::mesh_interior(blob, DOP::cell_size(3 * DO::interior_mesh_sizes(blob).cell_size))));
+}
+
+TEST(VolumeWorkflow, InwardOrientedSurfacesAreMeshedAlike)
+{
+  // ellipe0.003.off is stored with its faces oriented inwards.
+  DEMO_SURFACE(ellipse, "ellipe0.003.off");
+  ASSERT_FALSE(PMP::is_outward_oriented(ellipse));
+  const auto np = DOP::cell_size(2.5 * DO::interior_mesh_sizes(ellipse).cell_size);
+  const C3t3 inward = DO::mesh_interior(ellipse, np);
+  EXPECT_EQ(non_positive_cells(inward), 0u);
+  EXPECT_GT(DO::interior_mesh_sizes(ellipse).volume, 0.);
+  EXPECT_NEAR(complex_volume(inward), DO::interior_mesh_sizes(ellipse).volume, 0.03 * complex_volume(inward));
+  Surface outward = ellipse;
+  PMP::reverse_face_orientations(outward);
+  const C3t3 reversed = DO::mesh_interior(outward, np);
+  // The same complex: the domain's copy of the surface does not depend on the orientation.
+  EXPECT_TRUE(cell_points(reversed) == cell_points(inward));
+}
+
+TEST(VolumeWorkflow, BadInputIsRejected)
+{
+  expect_invalid([] { DO::mesh_interior(Surface()); }, "empty");
+
+  Surface quads;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                        Point(0, 1, 1), Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), quads);
+  expect_invalid([&] { DO::mesh_interior(quads); }, "not a triangle mesh: face 0 has 4 vertices");
+
+  Surface open = icosahedron(1);
+  CGAL::Euler::remove_face(halfedge(*faces(open).begin(), open), open);
+  expect_invalid([&] { DO::mesh_interior(open); }, "not closed: the edge from vertex ");
+
+  // Two tetrahedra that share only a vertex: closed, but not 2-manifold there.
+  Surface pinched;
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), pinched);
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(-1, 0, 0), Point(0, 0, -1), Point(0, -1, 0), pinched);
+  const Surface::Vertex_index kept(0), merged(4);
+  ASSERT_EQ(pinched.point(kept), pinched.point(merged));
+  for(auto h : pinched.halfedges())
+    if(pinched.target(h) == merged) pinched.set_target(h, kept);
+  pinched.remove_vertex(merged);
+  pinched.collect_garbage();
+  ASSERT_TRUE(CGAL::is_closed(pinched));
+  expect_invalid([&] { DO::mesh_interior(pinched); }, "not 2-manifold: the faces around vertex 0 do not form a single disk");
+
+  // Two icosahedra that overlap, in one mesh.
+  Surface overlapping = icosahedron(1);
+  CGAL::make_icosahedron(overlapping, Point(0.8, 0, 0), 1.);
+  expect_invalid([&] { DO::mesh_interior(overlapping); }, "intersects itself");
+
+  Surface nan = icosahedron(1);
+  nan.point(Surface::Vertex_index(3)) = Point(0, std::numeric_limits<double>::quiet_NaN(), 0);
+  expect_invalid([&] { DO::mesh_interior(nan); }, "vertex 3 has a non-finite coordinate");
+
+  const Surface good = icosahedron(1);
+  const double nan_value = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(0.)); }, "the cell size must be a positive finite number");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(-1.)); }, "the cell size");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::facet_size(nan_value)); }, "the facet size");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::facet_distance(inf)); }, "the facet distance");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::edge_size(-2.)); }, "the edge size");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::facet_angle(45.)); }, "the facet angle");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_radius_edge_ratio(1.)); }, "radius-edge ratio");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::sharp_edge_angle(0.)); }, "sharp edge angle");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::odt_iterations(-1)); }, "ODT and Lloyd");
+  // Far more vertices than allowed: the run stops with an error instead of a partial mesh.
+  expect_invalid([&] { DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100))); },
+                 "stopped at 100 vertices");
+  EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);
+}
+
+TEST(VolumeWorkflow, RealSelfIntersectingSurfaceIsRejected)
+{
+  DEMO_SURFACE(elk, "elk.off");   // closed and 2-manifold, but some faces cross
+  ASSERT_TRUE(CGAL::is_closed(elk));
+  expect_invalid([&] { DO::mesh_interior(elk); }, "intersects itself: faces ");
+}
+
+TEST(VolumeWorkflow, StarShapedToBallThenOptimizedKeepsEveryCell)
+{
+  // Both are star-shaped about their volume centroid (every face seen from it positively), and
+  // their coarse meshes map onto the ball without inverted cells (ellipsoid.off after exudation,
+  // whose weighted points the map reads too). Less round shapes (blobby.off) invert a few cells,
+  // some with their four vertices on the boundary: no map with that boundary repairs those.
+  for(const std::string name : {"larger_sphere.off", "ellipsoid.off"}) {
+    DEMO_SURFACE(surface, name);
+    const double h = 2 * DO::interior_mesh_sizes(surface).cell_size;
+    const C3t3 c3t3 = DO::mesh_interior(surface, DOP::cell_size(h, DOP::exude_slivers(name == "ellipsoid.off")));
+    ASSERT_EQ(non_positive_cells(c3t3), 0u);
+    Targets ball;
+    EXPECT_EQ(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), volume_centroid(c3t3)), 0u) << name;
+    EXPECT_EQ(inverted(c3t3, ball), 0u) << name;
+    EXPECT_EQ(CGAL::compute_distortion(c3t3, Target_map(ball), DO::Conformal_dilatation()).inverted_cells, 0u);
+    const DO::Result r = CGAL::minimize_distortion(c3t3, Target_map(ball), DO::Conformal_dilatation(),
+                                                   CGAL::parameters::number_of_iterations(10));
+    EXPECT_LT(r.final_energy, r.initial_energy) << name;
+    EXPECT_EQ(r.inverted_cells, 0u) << name;
+    EXPECT_EQ(inverted(c3t3, ball), 0u) << name;
+  }
+}
+
+TEST(VolumeWorkflow, WeightedPointsOfProtectedAndExudedMeshesWorkWithTheMaps)
+{
+  // Protected corners and edges carry weights, and exudation gives weights to other vertices: the
+  // maps must read positions through construct_point_3.
+  const Surface cube = triangulated_cube();
+  const C3t3 c3t3 = DO::mesh_interior(cube, DOP::cell_size(0.25, DOP::exude_slivers(true)));
+  const Tr& tr = c3t3.triangulation();
+  std::size_t weighted = 0;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) weighted += (v->point().weight() != 0);
+  EXPECT_GT(weighted, 0u);
+  ASSERT_EQ(non_positive_cells(c3t3), 0u);
+
+  // The harmonic map of an affine boundary map is that map.
+  auto affine = [](const Point& p) { return Point(2 * p.x() + 0.3 * p.y(), p.y() - 0.5 * p.z() + 1, 0.7 * p.z()); };
+  Targets exact, harmonic;
+  DO::map_vertices(c3t3, Target_map(exact), affine);
+  DO::map_vertices(c3t3, Target_map(harmonic), [](const Point& p) { return p; });
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        for(int k = 1; k < 4; ++k) harmonic[c->vertex((i + k) % 4)] = exact[c->vertex((i + k) % 4)];
+  DO::harmonic_map(c3t3, Target_map(harmonic));
+  double error = 0;
+  for(const auto& [v, p] : exact) error = (std::max)(error, std::sqrt(CGAL::squared_distance(p, harmonic.at(v))));
+  EXPECT_LT(error, 1e-8);
+
+  // The identity has no distortion; the radial map of the paper's Fig. 5 is improved without flips.
+  Targets identity;
+  DO::map_vertices(c3t3, Target_map(identity), [](const Point& p) { return p; });
+  const auto none = CGAL::compute_distortion(c3t3, Target_map(identity), DO::Conformal_dilatation());
+  EXPECT_NEAR(none.max, 1., 1e-9);
+  Targets radial;
+  DO::map_vertices(c3t3, Target_map(radial), [](const Point& p) {
+    const Point q(p.x() - 0.5, p.y() - 0.5, p.z() - 0.5);
+    const double r = std::sqrt(q.x() * q.x() + q.y() * q.y() + q.z() * q.z());
+    return Point(r * q.x(), r * q.y(), r * q.z());
+  });
+  const DO::Result r = CGAL::minimize_distortion(c3t3, Target_map(radial), DO::Symmetric_dirichlet(),
+                                                 CGAL::parameters::number_of_iterations(10));
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_EQ(inverted(c3t3, radial), 0u);
+}
