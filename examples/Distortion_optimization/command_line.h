@@ -9,6 +9,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -44,10 +45,25 @@ std::string usage()
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
   "         [--threads N] [--report R.json] [--schedule alternating|local|global] [--untangle]\n"
+  "       distortion_optimizer --source CLOSED --start ball|radial --output O.mesh\n"
+  "         [--mesh-output M.mesh] [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]\n"
+  "         [--carry INNER --carry-output C [--snap]] [options above]\n"
   "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
   "               vertices and cells in the same order; a planar target has z = 0; without\n"
   "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
   "               each cell's distortion, for ParaView)\n"
+  "  --start      volume mode: the inside of CLOSED (a closed OFF/OBJ surface, meshed with\n"
+  "               CGAL Mesh_3, or a .mesh) is mapped onto the unit ball (ball: star-shaped\n"
+  "               about the centre) or by x |x| about the centre (radial), then optimized; a\n"
+  "               start with flat cells is untangled first\n"
+  "  --mesh-output  the tetrahedra of the meshed source (.mesh): with O, a source/target pair\n"
+  "  --cell-size  largest tetrahedron circumradius for the meshing (default: from the volume)\n"
+  "  --center     the centre of the start map (default: the centroid of the volume)\n"
+  "  --boundary   slide (default with ball): boundary vertices move on the start's boundary\n"
+  "               surface (the unit sphere for ball); fixed (default with radial)\n"
+  "  --carry      a triangle surface inside the source volume, carried through the map to\n"
+  "               --carry-output (OFF/OBJ, same vertices and faces); --snap moves its vertices\n"
+  "               outside the volume onto the boundary instead of refusing them\n"
   "  NAME         " + names + "\n"
   "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
   "               one 0-based vertex index per line. With free border vertices the boundary is\n"
@@ -77,6 +93,14 @@ struct Command_line
   std::size_t iterations = 100, threads = 1;
   double threshold = 1e-4;
   bool untangle = false;
+  // Volume mode (--start): the start map, where the meshed source and the carried surface go.
+  std::string start, mesh_output, boundary, carry, carry_output;
+  double cell_size = 0;                      // 0: mesh_interior's default
+  std::vector<double> center;                // empty: the centroid of the volume
+  bool snap = false;
+  bool fix_given = false;
+  bool volume_mode() const { return !start.empty(); }
+  bool slides() const { return boundary == "slide" || (boundary.empty() && start == "ball"); }
 };
 
 template <class T>
@@ -110,6 +134,23 @@ File_identity identify(const std::string& path)
   return {s.st_dev, s.st_ino, path.substr(slash == std::string::npos ? 0 : slash + 1)};
 }
 
+// "X,Y,Z": three finite numbers.
+std::vector<double> parse_point(const std::string& option, const std::string& text)
+{
+  std::vector<double> x;
+  std::string rest = text;
+  for(int k = 0; k < 3; ++k) {
+    const std::size_t comma = rest.find(',');
+    if((k < 2) == (comma == std::string::npos)) throw Usage_error(option + " expects X,Y,Z, not '" + text + "'");
+    std::istringstream in(rest.substr(0, comma));
+    double value;
+    if(!(in >> value) || !in.eof() || !std::isfinite(value)) throw Usage_error(option + " expects X,Y,Z, not '" + text + "'");
+    x.push_back(value);
+    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+  }
+  return x;
+}
+
 // Inputs must be files (a folder reads as an empty file), and no output may name an input or
 // another output: writing over the start map in place is refused too (write elsewhere, then move).
 void check_files(const Command_line& c)
@@ -117,7 +158,10 @@ void check_files(const Command_line& c)
   std::vector<std::pair<std::string, std::string>> inputs = {{"--source", c.source}}, outputs = {{"--output", c.output}};
   if(!c.target.empty()) inputs.emplace_back("--target", c.target);
   if(c.fix != "boundary" && c.fix != "none") inputs.emplace_back("--fix", c.fix);
+  if(!c.carry.empty()) inputs.emplace_back("--carry", c.carry);
   if(!c.report.empty()) outputs.emplace_back("--report", c.report);
+  if(!c.mesh_output.empty()) outputs.emplace_back("--mesh-output", c.mesh_output);
+  if(!c.carry_output.empty()) outputs.emplace_back("--carry-output", c.carry_output);
   for(const auto& [option, path] : inputs) {
     struct stat s;
     if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
@@ -141,9 +185,10 @@ Command_line parse(int argc, char** argv)
   for(int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if(option == "--help" || option == "-h") throw Usage_error("");
-    if(option == "--untangle") {   // the one option without a value
-      if(c.untangle) throw Usage_error(option + " is given twice");
-      c.untangle = true;
+    if(option == "--untangle" || option == "--snap") {   // the options without a value
+      bool& flag = option == "--untangle" ? c.untangle : c.snap;
+      if(flag) throw Usage_error(option + " is given twice");
+      flag = true;
       continue;
     }
     if(i + 1 >= argc) throw Usage_error(option + " needs a value");
@@ -154,7 +199,17 @@ Command_line parse(int argc, char** argv)
     else if(option == "--target") c.target = value;
     else if(option == "--output") c.output = value;
     else if(option == "--measure") c.measure = value;
-    else if(option == "--fix") c.fix = value;
+    else if(option == "--fix") { c.fix = value; c.fix_given = true; }
+    else if(option == "--start") c.start = value;
+    else if(option == "--mesh-output") c.mesh_output = value;
+    else if(option == "--boundary") c.boundary = value;
+    else if(option == "--carry") c.carry = value;
+    else if(option == "--carry-output") c.carry_output = value;
+    else if(option == "--center") c.center = parse_point(option, value);
+    else if(option == "--cell-size") {
+      c.cell_size = parse_number<double>(option, value);
+      if(!(c.cell_size > 0) || !std::isfinite(c.cell_size)) throw Usage_error("--cell-size must be a positive number");
+    }
     else if(option == "--solver") c.solver = value;
     else if(option == "--report") c.report = value;
     else if(option == "--schedule") c.schedule = value;
@@ -171,11 +226,34 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
   if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
   const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
-  if(in == "mesh" ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
-    throw Usage_error(in == "mesh" ? "--output must end in .mesh or .vtu for a tetrahedral source"
-                                   : "--output must end in .off, .obj or .vtu");
-  if(in == "mesh" && c.target.empty())
-    throw Usage_error("a .mesh source needs --target (the start map)");
+  const bool tetrahedra = in == "mesh" || c.volume_mode();
+  if(tetrahedra ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
+    throw Usage_error(tetrahedra ? "--output must end in .mesh or .vtu for a tetrahedral map"
+                                 : "--output must end in .off, .obj or .vtu");
+  if(!c.start.empty() && c.start != "ball" && c.start != "radial")
+    throw Usage_error("--start is ball or radial, not '" + c.start + "'");
+  if(c.volume_mode() && !c.target.empty()) throw Usage_error("--start and --target both give the start map: give one");
+  if(in == "mesh" && c.target.empty() && !c.volume_mode())
+    throw Usage_error("a .mesh source needs --target (the start map) or --start");
+  const std::vector<std::pair<std::string, bool>> volume_only = {
+    {"--mesh-output", !c.mesh_output.empty()}, {"--cell-size", c.cell_size > 0}, {"--center", !c.center.empty()},
+    {"--boundary", !c.boundary.empty()}};
+  for(const auto& [option, given] : volume_only)
+    if(given && !c.volume_mode()) throw Usage_error(option + " needs --start (the volume mode)");
+  if(in == "mesh" && (c.cell_size > 0)) throw Usage_error("--cell-size is for a surface source (a .mesh source is already meshed)");
+  if(!c.mesh_output.empty() && DO::IO::internal::extension(c.mesh_output) != "mesh")
+    throw Usage_error("--mesh-output must end in .mesh");
+  if(!c.boundary.empty() && c.boundary != "slide" && c.boundary != "fixed")
+    throw Usage_error("--boundary is slide or fixed, not '" + c.boundary + "'");
+  if(c.slides() && c.fix_given && c.fix == "boundary")
+    throw Usage_error("--fix boundary and --boundary slide contradict each other");
+  if(c.carry.empty() != c.carry_output.empty()) throw Usage_error("--carry and --carry-output go together");
+  if(!c.carry.empty() && !tetrahedra) throw Usage_error("--carry needs a tetrahedral map (--start, or a .mesh source)");
+  if(c.snap && c.carry.empty()) throw Usage_error("--snap needs --carry");
+  for(const std::string* carried : {&c.carry, &c.carry_output}) {
+    const std::string e = DO::IO::internal::extension(*carried);
+    if(!carried->empty() && e != "off" && e != "obj") throw Usage_error("--carry and --carry-output must end in .off or .obj");
+  }
   if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
     throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
   try {

@@ -3,11 +3,18 @@
 //   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
 //                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
 //                        [--schedule alternating|local|global] [--untangle]
+//   distortion_optimizer --source CLOSED --start ball|radial --output O.mesh [--mesh-output M.mesh]
+//                        [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]
+//                        [--carry INNER --carry-output C [--snap]] [options above]
 //
 // S, T, O: OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same vertices
 // and cells in the same order; a planar target has z = 0. Without --target, a disk-topology
 // triangle source gets a Tutte start (circle border). O may also be .vtu: the optimized map with
 // each cell's distortion, for ParaView.
+// Volume mode (--start): the inside of a closed surface is meshed with Mesh_3 (or a .mesh source
+// is taken as it is), mapped onto the unit ball or by x |x|, untangled where that start flattens
+// cells, and optimized with the boundary sliding on the start's boundary surface or fixed; a
+// surface inside the volume may be carried through the map (paper 4.4).
 // Energies are volume-weighted means sum vol(c) D(J_c) / sum vol(c).
 // Exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command line.
 
@@ -21,6 +28,10 @@
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
+#include <CGAL/Distortion_optimization/mesh_interior.h>
+#include <CGAL/Distortion_optimization/sliding_surfaces.h>
+#include <CGAL/Distortion_optimization/volume_maps.h>
+#include <CGAL/Distortion_optimization/volumetric_texture.h>
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
@@ -36,9 +47,13 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <unordered_map>
+#include <unordered_set>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -145,7 +160,7 @@ std::string json_number(double x)
 
 // Prints the results and writes them to --report as JSON.
 void report(const Command_line& c, std::size_t cells, std::size_t vertices, const std::string& measure_name,
-            const DO::Result& r)
+            const DO::Result& r, const std::vector<std::pair<std::string, std::string>>& fields = {})
 {
   std::ostringstream json;
   json << "{\n  \"cells\": " << cells << ",\n  \"vertices\": " << vertices
@@ -155,7 +170,9 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
        << ",\n  \"converged\": " << (r.converged ? "true" : "false")
        << ",\n  \"inverted_start_cells\": " << r.inverted_start_cells << ",\n  \"untangle_iterations\": "
        << r.untangle_iterations << ",\n  \"untangle_seconds\": " << json_number(r.untangle_seconds)
-       << ",\n  \"energy_per_sweep\": [";
+       ;
+  for(const auto& [name, value] : fields) json << ",\n  \"" << name << "\": " << value;
+  json << ",\n  \"energy_per_sweep\": [";
   for(std::size_t i = 0; i < r.energy_per_iteration.size(); ++i)
     json << (i ? ", " : "") << json_number(r.energy_per_iteration[i]);
   json << "]\n}\n";
@@ -165,9 +182,10 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
               "final_energy    %.12g\nsweeps          %zu\nseconds         %.3f\ninverted_cells  %zu\n",
               cells, vertices, measure_name.c_str(), r.initial_energy, r.final_energy, r.iterations, r.seconds,
               r.inverted_cells);
-  if(c.untangle)
+  if(c.untangle || c.volume_mode())
     std::printf("inverted_start_cells  %zu\nuntangle_iterations   %zu\nuntangle_seconds      %.3f\n", r.inverted_start_cells,
                 r.untangle_iterations, r.untangle_seconds);
+  for(const auto& [name, value] : fields) std::printf("%-21s %s\n", name.c_str(), value.c_str());
 }
 
 int run_triangles(const Command_line& c)
@@ -245,9 +263,123 @@ int run_triangles(const Command_line& c)
   return 0;
 }
 
+// The tetrahedra of a Mesh_3 complex as a soup: the complex's vertices in the order of first use.
+template <class Complex>
+DO::IO::Tetrahedron_soup soup_of(const Complex& complex)
+{
+  const auto& tr = complex.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  DO::IO::Tetrahedron_soup soup;
+  std::unordered_map<typename Complex::Triangulation::Vertex_handle, std::size_t> index;
+  for(auto c = complex.cells_in_complex_begin(); c != complex.cells_in_complex_end(); ++c) {
+    std::array<std::size_t, 4> cell;
+    for(int i = 0; i < 4; ++i) {
+      const auto inserted = index.emplace(c->vertex(i), soup.points.size());
+      if(inserted.second) {
+        const K::Point_3 p = point(tr.point(c, i));
+        soup.points.push_back({p.x(), p.y(), p.z()});
+      }
+      cell[i] = inserted.first->second;
+    }
+    soup.cells.push_back(cell);
+    soup.labels.push_back(1);
+  }
+  return soup;
+}
+
+// The source tetrahedra: read from a .mesh, or the inside of a closed surface meshed by Mesh_3.
+DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh_seconds)
+{
+  if(DO::IO::internal::extension(c.source) == "mesh") return DO::IO::read_tetrahedron_soup(c.source);
+  const auto begin = std::chrono::steady_clock::now();
+  const Mesh surface = to_mesh(DO::IO::read_triangle_soup(c.source), c.source);
+  DO::IO::Tetrahedron_soup soup;
+  try {
+    soup = soup_of(c.cell_size > 0 ? DO::mesh_interior(surface, DO::parameters::cell_size(c.cell_size))
+                                   : DO::mesh_interior(surface));
+  } catch(const DO::Invalid_input& e) {
+    throw DO::Invalid_input(c.source + ": " + e.what());
+  }
+  mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  return soup;
+}
+
+// The volume-weighted centroid of the tetrahedra.
+K::Point_3 centroid(const DO::IO::Tetrahedron_soup& soup)
+{
+  double volume = 0, x[3] = {0, 0, 0};
+  for(const auto& t : soup.cells) {
+    const auto& a = soup.points[t[0]];
+    const auto& b = soup.points[t[1]];
+    const auto& d = soup.points[t[2]];
+    const auto& e = soup.points[t[3]];
+    const double v = std::abs(CGAL::to_double(CGAL::volume(K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2]),
+                                                           K::Point_3(d[0], d[1], d[2]), K::Point_3(e[0], e[1], e[2]))));
+    volume += v;
+    for(int k = 0; k < 3; ++k) x[k] += v * (a[k] + b[k] + d[k] + e[k]) / 4;
+  }
+  return K::Point_3(x[0] / volume, x[1] / volume, x[2] / volume);
+}
+
+// The start map's boundary triangles: the surface a --boundary slide keeps the boundary on.
+template <class Target>
+DO::Triangle_surface boundary_surface(const C3t3& c3t3, const Target& target)
+{
+  std::vector<std::array<std::array<double, 3>, 3>> faces;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i))) {
+        std::array<std::array<double, 3>, 3> t;
+        for(int j = 1; j < 4; ++j) {
+          const K::Point_3& p = get(target, c->vertex((i + j) % 4));
+          t[j - 1] = {p.x(), p.y(), p.z()};
+        }
+        faces.push_back(t);
+      }
+  return DO::Triangle_surface(faces);
+}
+
+// The surface carried through the tetrahedral map (--carry): embedded in the source volume once,
+// measured under the start map and the optimized one.
+struct Carried_surface
+{
+  DO::IO::Triangle_soup soup;
+  Mesh mesh;
+  DO::Volume_embedding<C3t3> embedding;
+  double start_energy = 0, final_energy = 0;
+
+  Carried_surface(const Command_line& c, const C3t3& c3t3)
+    : soup(DO::IO::read_triangle_soup(c.carry)), mesh(to_mesh(soup, c.carry)),
+      embedding(DO::embed_surface_in_volume(c3t3, mesh, DO::parameters::snap_to_volume(c.snap)))
+  {}
+
+  // The mean distortion (volume-weighted, as the tool's energies) of the surface under `target`.
+  template <class Target>
+  double energy(const Command_line& c, const Target& target)
+  {
+    auto image = mesh.add_property_map<Vertex, K::Point_3>("v:carried").first;
+    DO::carry_surface_vertices(mesh, embedding, target, image);
+    const auto stats = DO::with_measure(c.measure, [&](const auto& measure) { return CGAL::compute_distortion(mesh, image, measure); });
+    return stats.mean_volume;
+  }
+
+  template <class Target>
+  void write(const std::string& path, const Target& target)
+  {
+    std::vector<K::Point_3> images;
+    DO::carry_points(embedding, target, std::back_inserter(images));
+    DO::IO::Triangle_soup out;
+    out.cells = soup.cells;
+    for(const K::Point_3& p : images) out.points.push_back({p.x(), p.y(), p.z()});
+    DO::IO::write_triangle_soup(path, out);
+  }
+};
+
 int run_tetrahedra(const Command_line& c)
 {
-  const DO::IO::Tetrahedron_soup source = DO::IO::read_tetrahedron_soup(c.source);
+  std::vector<std::pair<std::string, std::string>> extra;   // the volume mode's report fields
+  double mesh_seconds = 0;
+  const DO::IO::Tetrahedron_soup source = read_or_mesh_source(c, mesh_seconds);
   DO::IO::Tetrahedron_soup target = source;
   if(!c.target.empty()) {
     target = DO::IO::read_tetrahedron_soup(c.target);
@@ -263,24 +395,42 @@ int run_tetrahedra(const Command_line& c)
       index[handles[i]] = i;
     }
   boost::associative_property_map<decltype(storage)> target_map(storage);
+  std::unique_ptr<Carried_surface> carried;
+  if(!c.carry.empty()) carried = std::make_unique<Carried_surface>(c, c3t3);
+
+  // Volume mode: the start map, the tool's own, untangled if the map flattens cells (a ball map
+  // does across the sharp edges of the domain).
+  Command_line run = c;
+  if(c.volume_mode()) {
+    const K::Point_3 center = c.center.empty() ? centroid(source) : K::Point_3(c.center[0], c.center[1], c.center[2]);
+    if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
+    else DO::radial_map(c3t3, target_map, center);
+    run.untangle = true;
+  }
+  if(carried) carried->start_energy = carried->energy(c, target_map);
 
   std::vector<unsigned char> listed;
   if(c.fix != "boundary" && c.fix != "none") listed = DO::IO::read_vertex_list(c.fix, source.points.size());
   auto fixed = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) {
-    return c.fix == "none" ? false : listed[index.at(v)] != 0;
+    return listed.empty() ? false : listed[index.at(v)] != 0;
   });
 
   std::string measure_name;
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
+    if(c.volume_mode() && c.slides()) {
+      const auto np = common_parameters(run).vertex_is_constrained_map(fixed);
+      return c.start == "ball"
+        ? CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Sphere_surface(), np))
+        : CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(boundary_surface(c3t3, target_map), np));
+    }
     return with_boundary_guard(c, [&](bool guard) {
       return c.fix == "boundary"
-        ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(c))
+        ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(run))
         : CGAL::minimize_distortion(c3t3, target_map, measure,
-            DO::parameters::preserve_global_injectivity(guard, common_parameters(c)).vertex_is_constrained_map(fixed));
+            DO::parameters::preserve_global_injectivity(guard, common_parameters(run)).vertex_is_constrained_map(fixed));
     });
   });
-
   DO::IO::Tetrahedron_soup output = source;
   for(std::size_t i = 0; i < handles.size(); ++i)
     if(handles[i] != Tr::Vertex_handle()) {
@@ -306,7 +456,26 @@ int run_tetrahedra(const Command_line& c)
   } else {
     DO::IO::write_MEDIT(c.output, output);
   }
-  report(c, source.cells.size(), source.points.size(), measure_name, r);
+  if(!c.mesh_output.empty()) DO::IO::write_MEDIT(c.mesh_output, source);
+  std::vector<std::pair<std::string, std::string>> fields;
+  if(c.volume_mode() || carried) {
+    std::unordered_set<Tr::Vertex_handle> boundary;
+    for(auto t = c3t3.cells_in_complex_begin(); t != c3t3.cells_in_complex_end(); ++t)
+      for(int i = 0; i < 4; ++i)
+        if(!c3t3.is_in_complex(t->neighbor(i)))
+          for(int j = 1; j < 4; ++j) boundary.insert(t->vertex((i + j) % 4));
+    fields = {{"tets", std::to_string(source.cells.size())}, {"boundary_vertices", std::to_string(boundary.size())},
+              {"mesh_seconds", json_number(mesh_seconds)}};
+  }
+  if(carried) {
+    carried->final_energy = carried->energy(c, target_map);
+    carried->write(c.carry_output, target_map);
+    fields.insert(fields.end(), {{"carried_vertices", std::to_string(carried->embedding.size())},
+                                 {"carried_outside", std::to_string(carried->embedding.snapped_points.size())},
+                                 {"start_energy_carried", json_number(carried->start_energy)},
+                                 {"final_energy_carried", json_number(carried->final_energy)}});
+  }
+  report(c, source.cells.size(), source.points.size(), measure_name, r, fields);
   return 0;
 }
 
@@ -322,11 +491,19 @@ int run(const Command_line& c)
   DO::IO::Temporary_file output(c.output, suffix(c.output));
   std::unique_ptr<DO::IO::Temporary_file> report;
   if(!c.report.empty()) report = std::make_unique<DO::IO::Temporary_file>(c.report, suffix(c.report));
+  std::unique_ptr<DO::IO::Temporary_file> mesh_output, carry_output;
+  if(!c.mesh_output.empty()) mesh_output = std::make_unique<DO::IO::Temporary_file>(c.mesh_output, suffix(c.mesh_output));
+  if(!c.carry_output.empty()) carry_output = std::make_unique<DO::IO::Temporary_file>(c.carry_output, suffix(c.carry_output));
   Command_line staged = c;
   staged.output = output.path();
   if(report) staged.report = report->path();
-  const int status = DO::IO::internal::extension(c.source) == "mesh" ? run_tetrahedra(staged) : run_triangles(staged);
+  if(mesh_output) staged.mesh_output = mesh_output->path();
+  if(carry_output) staged.carry_output = carry_output->path();
+  const bool tetrahedra = DO::IO::internal::extension(c.source) == "mesh" || c.volume_mode();
+  const int status = tetrahedra ? run_tetrahedra(staged) : run_triangles(staged);
   output.rename_to(c.output);
+  if(mesh_output) mesh_output->rename_to(c.mesh_output);
+  if(carry_output) carry_output->rename_to(c.carry_output);
   if(report) report->rename_to(c.report);
   return status;
 }

@@ -2,6 +2,7 @@
 
 #include "test_files.h"
 
+#include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -421,4 +423,156 @@ TEST(CommandLine, TheToolsOwnStartHasTheSourcesOrientation)
   const Tool_run result = run("--source " + cw + " --output " + o + " --measure symmetric_dirichlet");
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_NE(result.output.find("inverted_cells  0"), std::string::npos) << result.output;
+}
+
+namespace {
+
+// The cube [-1, 1]^3 as a closed, outward-oriented OFF surface, and an octahedron of the given
+// radius about c (a surface to carry).
+void write_cube(const std::string& path)
+{
+  std::ofstream(path) << "OFF\n8 12 0\n-1 -1 -1\n1 -1 -1\n-1 1 -1\n1 1 -1\n-1 -1 1\n1 -1 1\n-1 1 1\n1 1 1\n"
+                         "3 0 2 1\n3 1 2 3\n3 4 5 6\n3 5 7 6\n3 0 1 4\n3 1 5 4\n3 2 6 3\n3 3 6 7\n3 0 4 2\n3 2 4 6\n"
+                         "3 1 3 5\n3 3 7 5\n";
+}
+
+void write_octahedron(const std::string& path, double r, double c = 0)
+{
+  std::ofstream out(path);
+  out << "OFF\n6 8 0\n";
+  for(int a = 0; a < 3; ++a)
+    for(double s : {r, -r}) out << (a == 0 ? c + s : c) << ' ' << (a == 1 ? s : 0) << ' ' << (a == 2 ? s : 0) << '\n';
+  out << "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+}
+
+// The vertices on the boundary facets of a tetrahedron soup (facets in one tetrahedron only).
+std::vector<std::size_t> boundary_of(const IO::Tetrahedron_soup& soup)
+{
+  std::map<std::array<std::size_t, 3>, int> facets;
+  for(const auto& t : soup.cells)
+    for(int i = 0; i < 4; ++i) {
+      std::array<std::size_t, 3> f = {t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]};
+      std::sort(f.begin(), f.end());
+      ++facets[f];
+    }
+  std::vector<std::size_t> vertices;
+  for(const auto& [f, count] : facets)
+    if(count == 1) vertices.insert(vertices.end(), f.begin(), f.end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+std::size_t non_positive_tetrahedra(const IO::Tetrahedron_soup& soup)
+{
+  using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::size_t count = 0;
+  for(const auto& t : soup.cells) {
+    auto p = [&](int k) { return P(soup.points[t[k]][0], soup.points[t[k]][1], soup.points[t[k]][2]); };
+    count += CGAL::orientation(p(0), p(1), p(2), p(3)) != CGAL::POSITIVE;
+  }
+  return count;
+}
+
+} // namespace
+
+// The volume mode end to end (issue 14): a closed surface meshed by Mesh_3, mapped onto the ball
+// with its boundary sliding on the sphere, a surface carried through; the two .mesh files form a
+// source/target pair.
+TEST(CommandLine, VolumeModeMapsAClosedSurfaceOntoTheBallAndCarriesASurface)
+{
+  const std::string cube = temp("cube.off"), inner = temp("inner.off"), o = temp("ball.mesh"), m = temp("cube.mesh"),
+                    carried = temp("carried.off"), r = temp("ball.json");
+  write_cube(cube);
+  write_octahedron(inner, 0.5, 0.2);
+  const Tool_run result = run("--source " + cube + " --start ball --output " + o + " --mesh-output " + m +
+                              " --cell-size 0.4 --measure isometric --carry " + inner + " --carry-output " + carried +
+                              " --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Tetrahedron_soup source = IO::read_tetrahedron_soup(m), target = IO::read_tetrahedron_soup(o);
+  ASSERT_EQ(source.cells, target.cells);
+  ASSERT_EQ(source.points.size(), target.points.size());
+  EXPECT_GT(source.cells.size(), 500u);
+  EXPECT_EQ(non_positive_tetrahedra(source), 0u);
+  EXPECT_EQ(non_positive_tetrahedra(target), 0u);
+  const auto boundary = boundary_of(source);
+  for(std::size_t v : boundary) {
+    const auto& p = source.points[v];
+    EXPECT_NEAR(std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}), 1., 1e-12);   // on the cube
+    const auto& q = target.points[v];
+    EXPECT_NEAR(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]), 1., 1e-12);          // on the sphere
+  }
+  const std::string json = slurp(r);
+  EXPECT_EQ(json_value(json, "tets"), double(source.cells.size()));
+  EXPECT_EQ(json_value(json, "boundary_vertices"), double(boundary.size()));
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0.);
+  EXPECT_EQ(json_value(json, "carried_vertices"), 6.);
+  EXPECT_EQ(json_value(json, "carried_outside"), 0.);
+  EXPECT_GE(json_value(json, "mesh_seconds"), 0.);
+  EXPECT_LT(json_value(json, "final_energy"), json_value(json, "initial_energy"));
+  EXPECT_GE(json_value(json, "start_energy_carried"), 1.);
+  EXPECT_GE(json_value(json, "final_energy_carried"), 1.);
+  const IO::Triangle_soup in = IO::read_triangle_soup(inner), out = IO::read_triangle_soup(carried);
+  EXPECT_EQ(in.cells, out.cells);
+  ASSERT_EQ(out.points.size(), 6u);
+  for(const auto& q : out.points) EXPECT_LT(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]), 1.);
+
+  // The written source again, radial start about the origin with a fixed boundary: the boundary
+  // keeps the radial map's image, x |x|.
+  const std::string o2 = temp("radial.mesh");
+  const Tool_run radial = run("--source " + m + " --start radial --center 0,0,0 --boundary fixed --output " + o2 +
+                              " --iterations 5");
+  ASSERT_EQ(radial.status, 0) << radial.output;
+  const IO::Tetrahedron_soup radial_map = IO::read_tetrahedron_soup(o2);
+  EXPECT_EQ(non_positive_tetrahedra(radial_map), 0u);
+  for(std::size_t v : boundary) {
+    const auto& p = source.points[v];
+    const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    for(int k = 0; k < 3; ++k) EXPECT_EQ(radial_map.points[v][k], n * p[k]);
+  }
+}
+
+TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
+{
+  const std::string cube = temp("cube2.off"), o = temp("vol.mesh"), m = temp("vol_source.mesh"), c = temp("vol_carried.off");
+  write_cube(cube);
+  auto expect_failure = [&](const std::string& arguments, int status, const std::string& fragment) {
+    const Tool_run result = run(arguments);
+    EXPECT_EQ(result.status, status) << arguments << "\n" << result.output;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+    EXPECT_NE(result.output.find(fragment), std::string::npos) << arguments << "\n" << result.output;
+    for(const std::string& f : {o, m, c}) {
+      EXPECT_FALSE(exists(f)) << arguments;
+      EXPECT_EQ(leftovers(f), 0u) << arguments;
+    }
+  };
+  const std::string base = " --output " + o + " --mesh-output " + m + " --cell-size 0.5";
+  // An open surface: the cube without its last face.
+  const std::string open = temp("open.off");
+  IO::Triangle_soup soup = IO::read_triangle_soup(cube);
+  soup.cells.pop_back();
+  IO::write_triangle_soup(open, soup);
+  expect_failure("--source " + open + " --start ball" + base, 1, "border");
+  // Two cubes that cross each other.
+  const std::string crossing = temp("crossing.off");
+  IO::Triangle_soup two = IO::read_triangle_soup(cube);
+  for(std::size_t i = 0; i < 8; ++i) two.points.push_back({two.points[i][0] + 1, two.points[i][1] + 0.5, two.points[i][2] + 0.25});
+  for(std::size_t f = 0; f < 12; ++f) two.cells.push_back({two.cells[f][0] + 8, two.cells[f][1] + 8, two.cells[f][2] + 8});
+  IO::write_triangle_soup(crossing, two);
+  expect_failure("--source " + crossing + " --start ball" + base, 1, "cross");
+  expect_failure("--source " + cube + " --start ball --center 5,0,0" + base, 1, "not strictly inside");
+  const std::string outside = temp("outside.off");
+  write_octahedron(outside, 0.5, 0.8);   // reaches x = 1.3
+  expect_failure("--source " + cube + " --start ball" + base + " --carry " + outside + " --carry-output " + c, 1,
+                 "outside the volume");
+  // The command line.
+  expect_failure("--source " + cube + " --start sphere" + base, 2, "--start is ball or radial");
+  expect_failure("--source " + cube + " --start ball --target " + cube + base, 2, "give one");
+  expect_failure("--source " + cube + " --output " + temp("x.off") + " --mesh-output " + m, 2, "--mesh-output needs --start");
+  expect_failure("--source " + cube + " --start ball --boundary loose" + base, 2, "--boundary is slide or fixed");
+  expect_failure("--source " + cube + " --start ball --fix boundary" + base, 2, "contradict");
+  expect_failure("--source " + cube + " --start ball --center 1,2" + base, 2, "--center expects X,Y,Z");
+  expect_failure("--source " + cube + " --start ball --cell-size 0" + " --output " + o, 2, "--cell-size must be a positive number");
+  expect_failure("--source " + cube + " --start ball" + base + " --carry " + cube, 2, "go together");
+  expect_failure("--source " + cube + " --start ball --output " + temp("x.off"), 2, "--output must end in .mesh or .vtu");
 }
