@@ -321,24 +321,6 @@ K::Point_3 centroid(const DO::IO::Tetrahedron_soup& soup)
   return K::Point_3(x[0] / volume, x[1] / volume, x[2] / volume);
 }
 
-// The start map's boundary triangles: the surface a --boundary slide keeps the boundary on.
-template <class Target>
-DO::Triangle_surface boundary_surface(const C3t3& c3t3, const Target& target)
-{
-  std::vector<std::array<std::array<double, 3>, 3>> faces;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i))) {
-        std::array<std::array<double, 3>, 3> t;
-        for(int j = 1; j < 4; ++j) {
-          const K::Point_3& p = get(target, c->vertex((i + j) % 4));
-          t[j - 1] = {p.x(), p.y(), p.z()};
-        }
-        faces.push_back(t);
-      }
-  return DO::Triangle_surface(faces);
-}
-
 // The surface carried through the tetrahedral map (--carry): embedded in the source volume once,
 // measured under the start map and the optimized one.
 struct Carried_surface
@@ -422,7 +404,7 @@ int run_tetrahedra(const Command_line& c)
       const auto np = common_parameters(run).vertex_is_constrained_map(fixed);
       return c.start == "ball"
         ? CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Sphere_surface(), np))
-        : CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(boundary_surface(c3t3, target_map), np));
+        : CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map), np));
     }
     return with_boundary_guard(c, [&](bool guard) {
       return c.fix == "boundary"

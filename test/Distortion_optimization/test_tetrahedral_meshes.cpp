@@ -44,27 +44,23 @@ namespace {
 
 double unit_sphere(const Point_3& p) { return CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()) - 1.; }
 
-C3t3 mesh_sphere(double size)
+// A Mesh_3 mesh of {f < 0} inside the ball of the given radius about the origin.
+C3t3 mesh_implicit(double (*f)(const Point_3&), double radius, double size)
 {
   namespace params = CGAL::parameters;
-  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(unit_sphere, K::Sphere_3(CGAL::ORIGIN, 4.));
+  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(f, K::Sphere_3(CGAL::ORIGIN, radius * radius));
   Criteria criteria(params::facet_angle = 25, params::facet_size = size, params::facet_distance = size / 10,
                     params::cell_radius_edge_ratio = 3, params::cell_size = size);
   return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
 }
+
+C3t3 mesh_sphere(double size) { return mesh_implicit(unit_sphere, 2., size); }
 
 // The ellipsoid x^2 / a^2 + y^2 + z^2 <= 1 with a = 1.6: star-shaped about the origin, and far
 // enough from a ball that where its boundary lands on the sphere matters.
 double ellipsoid(const Point_3& p) { return CGAL::to_double(p.x() * p.x() / 2.56 + p.y() * p.y() + p.z() * p.z()) - 1.; }
 
-C3t3 mesh_ellipsoid(double size)
-{
-  namespace params = CGAL::parameters;
-  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(ellipsoid, K::Sphere_3(CGAL::ORIGIN, 9.));
-  Criteria criteria(params::facet_angle = 25, params::facet_size = size, params::facet_distance = size / 10,
-                    params::cell_radius_edge_ratio = 3, params::cell_size = size);
-  return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
-}
+C3t3 mesh_ellipsoid(double size) { return mesh_implicit(ellipsoid, 3., size); }
 
 Point_3 radial(const Point_3& p)   // f0(x) = x |x|, the start map of the paper's Fig. 5
 {
@@ -495,18 +491,7 @@ TEST(TetrahedralMeshes, BoundarySlidingOnATriangleSurface)
   const auto shear = [](const Point_3& p) { return Point_3(p.x() + 0.6 * p.y() * p.y(), p.y(), p.z() + 0.3 * p.x()); };
   Target_storage start;
   DO::map_vertices(c3t3, Target_map(start), shear);
-  std::vector<std::array<std::array<double, 3>, 3>> faces;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i))) {
-        std::array<std::array<double, 3>, 3> t;
-        for(int j = 1; j < 4; ++j) {
-          const Point_3& p = start.at(c->vertex((i + j) % 4));
-          t[j - 1] = {p.x(), p.y(), p.z()};
-        }
-        faces.push_back(t);
-      }
-  const DO::Triangle_surface surface(faces);
+  const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, Target_map(start));
   // The vertices at x = 1 stay fixed.
   std::unordered_set<Vertex_handle> anchored;
   for(Vertex_handle v : boundary_vertices(c3t3))

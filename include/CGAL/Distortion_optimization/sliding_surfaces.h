@@ -138,6 +138,27 @@ public:
     return Triangle_surface(triangles);
   }
 
+  /// The image of the boundary of a `Mesh_complex_3_in_triangulation_3` under a map of its
+  /// vertices (a readable property map from `Vertex_handle` to `Point_3`, e.g. the start map):
+  /// its boundary facets, those between a cell of the complex and one outside it.
+  /// \throws Invalid_input as the constructor (a complex without boundary has no triangle).
+  template <class C3T3, class TargetMap>
+  static Triangle_surface from_complex_boundary(const C3T3& c3t3, const TargetMap& target)
+  {
+    std::vector<std::array<std::array<double, 3>, 3>> triangles;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        if(!c3t3.is_in_complex(c->neighbor(i))) {
+          std::array<std::array<double, 3>, 3> t;
+          for(int j = 1; j < 4; ++j) {
+            const auto& p = get(target, c->vertex((i + j) % 4));
+            t[j - 1] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+          }
+          triangles.push_back(t);
+        }
+    return Triangle_surface(triangles);
+  }
+
   /// The closest point of the surface to `x` and the unit normal of its triangle (oriented by
   /// the triangle's vertex order).
   std::array<double, 3> project(const std::array<double, 3>& x, std::array<double, 3>& normal) const
