@@ -339,6 +339,55 @@ TEST(TetrahedralMeshes, TangledCubeWithAFixedBoundaryIsUntangledThenOptimized)
   }
 }
 
+// A cell whose orientation is right by the exact predicate but whose floating-point det J is not
+// positive: a normalized measure is infinite there, so untangling must not count it as done (it
+// used to, and minimize_distortion(untangle_first) then threw on the map untangle returned).
+TEST(TetrahedralMeshes, ACellValidOnlyByAHairIsUntangledToo)
+{
+  const C3t3 c3t3 = tetgen_cube_complex(0.01);
+  const auto boundary = boundary_vertices(c3t3);
+  Target_storage identity;
+  DO::map_vertices(c3t3, Target_map(identity), [](const Point_3& p) { return p; });
+  const auto minimize = [&](Target_storage& map, bool untangle_first) {
+    return CGAL::minimize_distortion(c3t3, Target_map(map), DO::Symmetric_dirichlet(),
+                                     DO::parameters::untangle_first(untangle_first).number_of_iterations(5));
+  };
+  // An interior vertex moved almost onto the opposite facet of one of its cells, closer and closer
+  // until that cell is valid by the exact predicate yet infinite for the measure.
+  Target_storage start;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end() && start.empty(); ++c) {
+    if(boundary.count(c->vertex(0))) continue;
+    const Point_3 v = c->vertex(0)->point().point();
+    const Point_3 g = CGAL::centroid(c->vertex(1)->point().point(), c->vertex(2)->point().point(), c->vertex(3)->point().point());
+    for(double t = 1e-12; t > 1e-22 && start.empty(); t /= 2) {
+      Target_storage trial = identity;
+      trial[c->vertex(0)] = g + t * (v - g);
+      if(inverted(c3t3, trial) != 0) break;
+      try {
+        minimize(trial, false);
+      } catch(const DO::Invalid_input&) {
+        start = trial;
+      }
+    }
+  }
+  ASSERT_FALSE(start.empty()) << "no cell valid by a hair was found";
+  ASSERT_EQ(inverted(c3t3, start), 0u);
+
+  Target_storage untangled = start;
+  const DO::Untangle_result u = DO::untangle(c3t3, Target_map(untangled));
+  EXPECT_GE(u.inverted_before, 1u);
+  EXPECT_EQ(u.inverted_after, 0u);
+  EXPECT_NO_THROW(minimize(untangled, false));
+
+  Target_storage optimized = start;
+  DO::Result r;
+  ASSERT_NO_THROW(r = minimize(optimized, true));
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_EQ(inverted(c3t3, optimized), 0u);
+  EXPECT_TRUE(std::isfinite(r.final_energy));
+  for(Vertex_handle v : boundary) EXPECT_EQ(optimized.at(v), start.at(v));
+}
+
 TEST(TetrahedralMeshes, HugeCoordinatesGiveTheScaledMap)
 {
   // A cube of side 2e110 (volumes near 1e330 would overflow): the same map as the unit cube's.

@@ -115,6 +115,18 @@ bool is_inverted(const Simplicial_map<n>& map, std::size_t c, const GeomTraits& 
   return target_orientation(map, c, traits) != map.rest_sign[c];
 }
 
+// Whether cell c, valid or not by the exact predicate, is too close to flat for the measures'
+// floating-point det J_c (of the Jacobian as they compute it) to have a reliable sign: det J_c at
+// most 1e-12 |J_c|^n, a thousand times the rounding error of the determinant. A normalized
+// measure may be infinite on such a cell although its orientation is right.
+template <int n>
+bool is_numerically_flat(const Simplicial_map<n>& map, std::size_t c)
+{
+  const Matrix<n> J = map.jacobian(c);
+  const double norm2 = J.squaredNorm();
+  return !(J.determinant() > 1e-12 * (n == 2 ? norm2 : norm2 * std::sqrt(norm2)));
+}
+
 } // namespace internal
 } // namespace Distortion_optimization
 } // namespace CGAL

@@ -10,6 +10,10 @@
 // chi(D-, eps) = mu, i.e. eps = 2 sqrt(mu (mu - D-)) while D- < mu; so the worst cell's stand-in
 // determinant shrinks by at least 10% a round, faster when the round gained much.
 //
+// A cell is untangled when its orientation is its source's (exact predicate) and it is not
+// numerically flat (simplicial_map.h): a cell valid by a hair would make a normalized measure
+// infinite when the optimizer takes over.
+//
 // Unlike their L-BFGS, each round here is iterations of the package's own steps on the package's
 // own state: constrained vertices never move, and with the boundary guard the boundary never starts
 // crossing itself. While eps falls only the barrier keeps cells from folding; from its floor on, no
@@ -41,6 +45,13 @@ struct Untangle_report
 
 // The rounds untangle() and minimize_distortion(untangle_first) run at most by default.
 constexpr std::size_t default_untangle_rounds = 1000;
+
+// Whether cell c still needs untangling: inverted or flat (exact predicate), or numerically flat.
+template <int n, class GeomTraits>
+bool is_tangled(const Simplicial_map<n>& map, std::size_t c, const GeomTraits& traits)
+{
+  return is_inverted(map, c, traits) || is_numerically_flat(map, c);
+}
 
 // The smallest det J_c of the map, in parallel.
 template <int n>
@@ -86,13 +97,21 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   // through flat states. Once eps is at its floor, no valid cell may flip any more (the optimizer's
   // own guarantee), so that the count of inverted cells only falls.
   State state(problem, barrier, traits, workers, false);
+  // The state counts the cells inverted by the exact predicate; those valid but numerically flat
+  // are untangled too.
+  const auto tangled = [&] {
+    return state.number_of_inverted_cells() +
+           workers.reduce(problem.map.number_of_cells(), std::size_t(0),
+                          [&](std::size_t c) { return std::size_t(state.is_valid(c) && is_numerically_flat(problem.map, c)); },
+                          [](std::size_t a, std::size_t b) { return a + b; });
+  };
   Untangle_report report;
-  report.inverted_before = report.inverted_after = state.number_of_inverted_cells();
+  report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
   for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c) {
     bool moves = false;
     for(auto v : problem.map.cells[c]) moves = moves || problem.is_free[v];
-    if(!moves && !state.is_valid(c))
+    if(!moves && (!state.is_valid(c) || is_numerically_flat(problem.map, c)))
       throw Invalid_input("cell " + std::to_string(c) + " is inverted or flat and all its vertices are constrained: "
                           "no map with these constraints is injective");
   }
@@ -108,15 +127,15 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   while(report.iterations < options.iterations) {
     ++report.iterations;
     const double before = state.energy();
-    const std::size_t inverted_before = state.number_of_inverted_cells();
+    const std::size_t inverted_before = report.inverted_after;
     double energy = before;
     for(int k = 0; k < 200; ++k) {
       const double previous = energy;
       steps.iterate();
       energy = state.energy();
-      if(state.number_of_inverted_cells() == 0 || !(previous - energy > 1e-5 * std::abs(previous))) break;
+      if(tangled() == 0 || !(previous - energy > 1e-5 * std::abs(previous))) break;
     }
-    report.inverted_after = state.number_of_inverted_cells();
+    report.inverted_after = tangled();
     if(options.visitor && !options.visitor(report.iterations, static_cast<double>(report.inverted_after))) {
       report.stopped_by_visitor = true;
       break;
@@ -176,7 +195,7 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     std::size_t inverted = 0;
     region.assign(problem.number_of_vertices(), 0);
     for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c)
-      if(is_inverted(problem.map, c, traits)) {
+      if(is_tangled(problem.map, c, traits)) {
         ++inverted;
         for(auto v : problem.map.cells[c]) region[v] = 1;
       }
