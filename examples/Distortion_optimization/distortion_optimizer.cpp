@@ -304,23 +304,6 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
   return soup;
 }
 
-// The volume-weighted centroid of the tetrahedra.
-K::Point_3 centroid(const DO::IO::Tetrahedron_soup& soup)
-{
-  double volume = 0, x[3] = {0, 0, 0};
-  for(const auto& t : soup.cells) {
-    const auto& a = soup.points[t[0]];
-    const auto& b = soup.points[t[1]];
-    const auto& d = soup.points[t[2]];
-    const auto& e = soup.points[t[3]];
-    const double v = std::abs(CGAL::to_double(CGAL::volume(K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2]),
-                                                           K::Point_3(d[0], d[1], d[2]), K::Point_3(e[0], e[1], e[2]))));
-    volume += v;
-    for(int k = 0; k < 3; ++k) x[k] += v * (a[k] + b[k] + d[k] + e[k]) / 4;
-  }
-  return K::Point_3(x[0] / volume, x[1] / volume, x[2] / volume);
-}
-
 // The surface carried through the tetrahedral map (--carry): embedded in the source volume once,
 // measured under the start map and the optimized one.
 struct Carried_surface
@@ -384,7 +367,7 @@ int run_tetrahedra(const Command_line& c)
   // does across the sharp edges of the domain).
   Command_line run = c;
   if(c.volume_mode()) {
-    const K::Point_3 center = c.center.empty() ? centroid(source) : K::Point_3(c.center[0], c.center[1], c.center[2]);
+    const K::Point_3 center = c.center.empty() ? DO::volume_centroid(c3t3) : K::Point_3(c.center[0], c.center[1], c.center[2]);
     if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
     else DO::radial_map(c3t3, target_map, center);
     run.untangle = true;

@@ -507,7 +507,7 @@ TEST(TetrahedralMeshes, BoundarySlidingOnTheUnitSphere)
 {
   const C3t3 c3t3 = mesh_ellipsoid(0.3);
   Target_storage start;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), Point_3(0, 0, 0));
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), CGAL::ORIGIN);
   ASSERT_EQ(inverted(c3t3, start), 0u);
   const auto boundary = boundary_vertices(c3t3);
 

@@ -46,6 +46,11 @@ void map_vertices(const C3T3& c3t3, TargetMap target, const Function& f)
 
 namespace internal {
 
+// The point type of a complex's vertices (without weight); the start maps take their centre as one,
+// so that `CGAL::ORIGIN` converts to it.
+template <class C3T3>
+using C3t3_point = typename C3T3::Triangulation::Geom_traits::Point_3;
+
 // Whether p is in a cell of the complex and on no facet of its boundary (exact predicates).
 template <class C3T3, class Point_3>
 bool is_strictly_inside(const C3T3& c3t3, const Point_3& p)
@@ -69,13 +74,39 @@ bool is_strictly_inside(const C3T3& c3t3, const Point_3& p)
 } // namespace internal
 
 /// \ingroup PkgDistortionOptimizationRef
+/// The centre of mass of the cells of the complex (each cell weighted by its volume): the natural
+/// centre of `star_shaped_to_unit_ball()` and `radial_map()`, and the tool's default `--center`.
+/// The average of the vertices would follow the mesh's sampling instead of the volume.
+/// \throws Invalid_input if the complex has no cell of positive volume
+template <class C3T3>
+internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
+{
+  using Point_3 = internal::C3t3_point<C3T3>;
+  const auto& tr = c3t3.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  double volume = 0, x = 0, y = 0, z = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    const Point_3 p[4] = {point(tr.point(c, 0)), point(tr.point(c, 1)), point(tr.point(c, 2)), point(tr.point(c, 3))};
+    const double w = std::abs(CGAL::to_double(CGAL::volume(p[0], p[1], p[2], p[3])));
+    const Point_3 g = CGAL::centroid(p[0], p[1], p[2], p[3]);
+    volume += w;
+    x += w * CGAL::to_double(g.x());
+    y += w * CGAL::to_double(g.y());
+    z += w * CGAL::to_double(g.z());
+  }
+  if(!(volume > 0)) throw Invalid_input("the complex has no cell of positive volume: it has no centroid");
+  return Point_3(x / volume, y / volume, z / volume);
+}
+
+/// \ingroup PkgDistortionOptimizationRef
 /// The radial map of the paper's Table 1 and Fig. 5 about `center`: `p` goes to
 /// `(p - center) |p - center|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the
 /// unit sphere and shrinks the inside). Injective on any domain, but with a conformal distortion
 /// that grows without bound towards the centre: a hard start for the optimizer.
-template <class C3T3, class TargetMap, class Point_3>
-void radial_map(const C3T3& c3t3, TargetMap target, const Point_3& center)
+template <class C3T3, class TargetMap>
+void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
 {
+  using Point_3 = internal::C3t3_point<C3T3>;
   map_vertices(c3t3, target, [&](const Point_3& p) {
     const auto u = p - center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
@@ -101,9 +132,10 @@ void radial_map(const C3T3& c3t3, TargetMap target, const Point_3& center)
 /// star-shaped about it (the message names the first boundary facet that faces `center`; another
 /// centre, or untangling a map built otherwise, e.g. the radial map, are the remedies). `target`
 /// is then unchanged.
-template <class C3T3, class TargetMap, class Point_3>
-std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const Point_3& center)
+template <class C3T3, class TargetMap>
+std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
 {
+  using Point_3 = internal::C3t3_point<C3T3>;
   using K = typename Kernel_traits<Point_3>::Kernel;
   using Triangle = typename K::Triangle_3;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, typename std::vector<Triangle>::const_iterator>>>;
