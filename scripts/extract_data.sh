@@ -50,7 +50,8 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/mannequin-devil.off \
   data/meshes/nefertiti.off \
   data/meshes/three_peaks.off \
-  data/meshes/bunny00.off
+  data/meshes/bunny00.off \
+  data/meshes/blobby.off
 
 extract "$DOC_DIR/examples.tar.gz" \
   examples/Tetrahedral_remeshing/data/sphere.mesh
