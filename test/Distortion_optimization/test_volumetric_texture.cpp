@@ -1,7 +1,8 @@
 // Volumetric textures (paper section 4.4): points and surfaces embedded in a complex of tetrahedra
 // (eq. 18), carried through maps of it, and the distortion of the carried surface.
 
-#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
+#include "test_complexes.h"
+
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/Distortion_optimization/volumetric_texture.h>
@@ -31,47 +32,9 @@
 namespace {
 
 namespace DO = CGAL::Distortion_optimization;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point_3 = K::Point_3;
-using Tr = CGAL::Mesh_triangulation_3<CGAL::Labeled_mesh_domain_3<K>>::type;
-using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
-using Vertex_handle = Tr::Vertex_handle;
-using Target_storage = std::unordered_map<Vertex_handle, Point_3>;
-using Target_map = boost::associative_property_map<Target_storage>;
+using namespace test_complexes;
 using Mesh = CGAL::Surface_mesh<Point_3>;
 using Embedding = DO::Volume_embedding<C3t3>;
-
-// The unit cubes [i, i+1] x [j, j+1] x [k, k+1] of an n^3 block for which keep(i, j, k), each split
-// into the 6 tetrahedra of Freudenthal's (Kuhn's) subdivision, which conform across cubes. All
-// coordinates are integers: points on faces, edges and vertices are exact.
-C3t3 cube_complex(int n, const std::function<bool(int, int, int)>& keep)
-{
-  std::vector<std::array<double, 3>> points;
-  for(int k = 0; k <= n; ++k)
-    for(int j = 0; j <= n; ++j)
-      for(int i = 0; i <= n; ++i) points.push_back({double(i), double(j), double(k)});
-  const auto at = [&](int i, int j, int k) { return std::size_t((k * (n + 1) + j) * (n + 1) + i); };
-  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  std::vector<std::array<std::size_t, 4>> tets;
-  for(int k = 0; k < n; ++k)
-    for(int j = 0; j < n; ++j)
-      for(int i = 0; i < n; ++i) {
-        if(!keep(i, j, k)) continue;
-        for(const auto& p : permutations) {
-          int c[3] = {i, j, k};
-          std::array<std::size_t, 4> t;
-          t[0] = at(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s) {
-            ++c[p[s]];
-            t[s + 1] = at(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        }
-      }
-  C3t3 c3t3;
-  DO::c3t3_from_tetrahedra(points, tets, c3t3);
-  return c3t3;
-}
 
 // A U in the (x, y) plane, 4 x 4 x 2 cubes without the notch x in [1, 3], y in [1, 4]: two arms
 // joined at y < 1.

@@ -1,0 +1,280 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Mesh quality from distortion: a mesh is a map from ideal cells (the regular simplex), so that
+// minimizing a measure of that map improves the mesh's element shapes with its connectivity kept
+// and no cell inverted (Naitsat, Saucan and Zeevi, "Geometry-based distortion measures for space
+// deformation", section 4.2). Also the classic quality statistics to judge the result.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_MESH_QUALITY_H
+#define CGAL_DISTORTION_OPTIMIZATION_MESH_QUALITY_H
+
+#include <CGAL/Distortion_optimization/Result.h>
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
+#include <CGAL/Distortion_optimization/internal/run_on_adapter.h>
+#include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <type_traits>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The shape quality of the cells of a mesh, as returned by `mesh_quality()`. Angles are the
+/// dihedral angles of tetrahedra, or the angles of triangles, in degrees.
+struct Mesh_quality
+{
+  std::size_t cells = 0;
+  double min_angle = 0;            ///< the smallest angle of any cell
+  double max_angle = 0;            ///< the largest angle of any cell
+  double mean_min_angle = 0;       ///< the mean over the cells of each cell's smallest angle
+  double min_radius_ratio = 0;     ///< the smallest n r / R (inradius over circumradius, 1 for the regular simplex)
+  double mean_radius_ratio = 0;    ///< its mean over the cells
+  std::size_t slivers = 0;         ///< cells with an angle below 10 degrees (3D: dihedral angles)
+  std::size_t inverted_cells = 0;  ///< cells whose orientation is not the mesh's (exact predicate), flat ones included
+};
+
+namespace internal {
+
+// Calls f(points) with each cell's vertex positions under `positions` (triangles of a triangle
+// mesh, tetrahedra of the complex).
+template <class Mesh, class PositionMap, class F>
+void for_each_cell_points(const Mesh& mesh, const PositionMap& positions, const F& f)
+{
+  using Point = typename boost::property_traits<PositionMap>::value_type;
+  if constexpr(Is_c3t3<Mesh>::value) {
+    for(auto c = mesh.cells_in_complex_begin(); c != mesh.cells_in_complex_end(); ++c)
+      f(std::array<Point, 4>{get(positions, c->vertex(0)), get(positions, c->vertex(1)), get(positions, c->vertex(2)),
+                             get(positions, c->vertex(3))});
+  } else {
+    for(auto face : faces(mesh)) {
+      std::array<Point, 3> p;
+      int i = 0;
+      for(auto v : vertices_around_face(halfedge(face, mesh), mesh)) {
+        if(i == 3) throw Invalid_input("face " + std::to_string(std::size_t(face)) + " is not a triangle");
+        p[i++] = get(positions, v);
+      }
+      if(i != 3) throw Invalid_input("face " + std::to_string(std::size_t(face)) + " is not a triangle");
+      f(p);
+    }
+  }
+}
+
+template <class Point>
+Vector<3> as_vector(const Point& p)
+{
+  if constexpr(Target_dimension<Point>::value == 3)
+    return Vector<3>(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  else
+    return Vector<3>(CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0.);
+}
+
+// The angles (degrees) and n r / R of a triangle or tetrahedron.
+inline void cell_shape(const std::array<Vector<3>, 3>& p, std::array<double, 6>& angles, int& count, double& ratio)
+{
+  count = 3;
+  double perimeter = 0, product = 1;
+  for(int i = 0; i < 3; ++i) {
+    const Vector<3> a = p[(i + 1) % 3] - p[i], b = p[(i + 2) % 3] - p[i];
+    angles[i] = std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / CGAL_PI;
+    perimeter += a.norm();
+    product *= a.norm();
+  }
+  const double area = (p[1] - p[0]).cross(p[2] - p[0]).norm() / 2;
+  // r = 2A / perimeter, R = abc / 4A: 2 r / R = 16 A^2 / (perimeter abc).
+  ratio = product > 0 ? 16 * area * area / (perimeter * product) : 0.;
+}
+
+inline void cell_shape(const std::array<Vector<3>, 4>& p, std::array<double, 6>& angles, int& count, double& ratio)
+{
+  count = 6;
+  static const int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  for(int e = 0; e < 6; ++e) {
+    const Vector<3> axis = p[edges[e][1]] - p[edges[e][0]];
+    const Vector<3> n1 = axis.cross(p[edges[e][2]] - p[edges[e][0]]), n2 = axis.cross(p[edges[e][3]] - p[edges[e][0]]);
+    angles[e] = std::atan2(n1.cross(n2).norm(), n1.dot(n2)) * 180 / CGAL_PI;
+  }
+  const Vector<3> a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
+  const double volume = std::abs(a.dot(b.cross(c))) / 6;
+  double faces = 0;
+  for(int i = 0; i < 4; ++i) faces += (p[(i + 2) % 4] - p[(i + 1) % 4]).cross(p[(i + 3) % 4] - p[(i + 1) % 4]).norm() / 2;
+  // r = 3V / faces; R = |a^2 (b x c) + b^2 (c x a) + c^2 (a x b)| / 12V: 3 r / R = 108 V^2 / (faces |...|).
+  const double circum = (a.squaredNorm() * b.cross(c) + b.squaredNorm() * c.cross(a) + c.squaredNorm() * a.cross(b)).norm();
+  ratio = faces > 0 && circum > 0 ? 108 * volume * volume / (faces * circum) : 0.;
+}
+
+// The edges of the regular simplex of the given volume (area in 2D) and orientation sign: the
+// "source" of a cell measured against the ideal element.
+template <int n>
+Matrix<n> ideal_cell_edges(double volume, int sign)
+{
+  Matrix<n> E;
+  if constexpr(n == 2) {
+    E << 1., 0.5, 0., std::sqrt(3.) / 2;                       // area sqrt(3) / 4
+    E *= std::sqrt(volume / (std::sqrt(3.) / 4));
+  } else {
+    E << 1., 0.5, 0.5, 0., std::sqrt(3.) / 2, std::sqrt(3.) / 6, 0., 0., std::sqrt(2. / 3);   // volume sqrt(2) / 12
+    E *= std::cbrt(volume / (std::sqrt(2.) / 12));
+  }
+  if(sign < 0) E.row(n - 1) *= -1;   // the mirror image: the orientation of the cell
+  return E;
+}
+
+// Each cell of the map measured against the regular simplex of its own source volume, all with
+// the orientation of the mesh as a whole (the sign of its total signed volume): a cell that the
+// start inverts is inverted for the optimizer too, not the image of a mirrored ideal.
+template <int n>
+void use_ideal_cells(Simplicial_map<n>& map)
+{
+  double signed_volume = 0;
+  for(std::size_t c = 0; c < map.number_of_cells(); ++c) signed_volume += map.rest_sign[c] * map.rest_volume[c];
+  const signed char sign = signed_volume >= 0 ? 1 : -1;
+  for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
+    map.rest_sign[c] = sign;
+    map.inverse_rest[c] = ideal_cell_edges<n>(map.rest_volume[c], sign).inverse();
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The shape quality of the triangles of `tm` (a `Point_2` position map) or of the tetrahedra of
+/// a `Mesh_complex_3_in_triangulation_3` (a `Point_3` position map keyed by `Vertex_handle`; only
+/// cells in the complex count) at `positions`: smallest, largest and mean smallest angles
+/// (dihedral angles in 3D), radius ratios, slivers and inverted cells. A triangle is inverted when
+/// its orientation differs from the sign of the mesh's total signed area (a mesh may be clockwise
+/// as a whole); a tetrahedron when it is not positive, as every cell of a complex is.
+/// \throws Invalid_input if a face is not a triangle or the mesh has no cell
+template <class Mesh, class PositionMap>
+Mesh_quality mesh_quality(const Mesh& mesh, const PositionMap& positions)
+{
+  using Point = typename boost::property_traits<PositionMap>::value_type;
+  constexpr int n = internal::Is_c3t3<Mesh>::value ? 3 : 2;
+  Mesh_quality q;
+  double signed_area = 0;
+  if constexpr(n == 2)
+    internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, 3>& p) {
+      signed_area += CGAL::to_double(CGAL::area(p[0], p[1], p[2]));
+    });
+  const CGAL::Orientation expected = n == 3 || signed_area >= 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+  q.min_angle = 180;
+  q.min_radius_ratio = 1;
+  internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, n + 1>& p) {
+    std::array<internal::Vector<3>, n + 1> x;
+    for(int i = 0; i <= n; ++i) x[i] = internal::as_vector(p[i]);
+    std::array<double, 6> angles;
+    int count = 0;
+    double ratio = 0;
+    internal::cell_shape(x, angles, count, ratio);
+    const double smallest = *std::min_element(angles.begin(), angles.begin() + count);
+    q.min_angle = std::min(q.min_angle, smallest);
+    q.max_angle = std::max(q.max_angle, *std::max_element(angles.begin(), angles.begin() + count));
+    q.mean_min_angle += smallest;
+    q.min_radius_ratio = std::min(q.min_radius_ratio, ratio);
+    q.mean_radius_ratio += ratio;
+    q.slivers += smallest < 10;
+    if constexpr(n == 2) q.inverted_cells += CGAL::orientation(p[0], p[1], p[2]) != expected;
+    else q.inverted_cells += CGAL::orientation(p[0], p[1], p[2], p[3]) != expected;
+    ++q.cells;
+  });
+  if(q.cells == 0) throw Invalid_input("the mesh has no cell");
+  q.mean_min_angle /= q.cells;
+  q.mean_radius_ratio /= q.cells;
+  return q;
+}
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The vertices of the complex's boundary on a sharp edge at `positions`: an edge whose two
+/// boundary facets have normals more than `angle` degrees apart (as `mesh_interior()`'s
+/// `sharp_edge_angle`), corners included. With the boundary sliding in `improve_mesh_quality()`,
+/// constraining them keeps the features: a vertex on an edge would otherwise round it off.
+/// \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+/// \tparam PositionMap a readable property map from `Vertex_handle` to `Point_3`
+template <class C3T3, class PositionMap>
+std::unordered_set<typename C3T3::Triangulation::Vertex_handle>
+sharp_boundary_vertices(const C3T3& c3t3, const PositionMap& positions, double angle = 60)
+{
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  std::map<std::pair<Vertex_handle, Vertex_handle>, std::vector<internal::Vector<3>>> normals;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i) {
+      if(c3t3.is_in_complex(c->neighbor(i))) continue;
+      Vertex_handle v[3] = {c->vertex((i + 1) % 4), c->vertex((i + 2) % 4), c->vertex((i + 3) % 4)};
+      const internal::Vector<3> a = internal::as_vector(get(positions, v[0])), b = internal::as_vector(get(positions, v[1])),
+                                d = internal::as_vector(get(positions, v[2])), o = internal::as_vector(get(positions, c->vertex(i)));
+      internal::Vector<3> normal = (b - a).cross(d - a);
+      if(normal.dot(o - a) > 0) normal = -normal;   // outward
+      normal.normalize();
+      for(int k = 0; k < 3; ++k) normals[std::minmax(v[k], v[(k + 1) % 3])].push_back(normal);
+    }
+  const double cosine = std::cos(angle * CGAL_PI / 180);
+  std::unordered_set<Vertex_handle> sharp;
+  for(const auto& [edge, n] : normals)
+    if(n.size() != 2 || n[0].dot(n[1]) < cosine) {   // more than two facets: a non-manifold edge, kept too
+      sharp.insert(edge.first);
+      sharp.insert(edge.second);
+    }
+  return sharp;
+}
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Improves the shapes of the cells of a mesh with its connectivity kept: the mesh at `positions` is
+taken as the image of a map whose source cells are regular simplices (each of its own start
+area or volume, with its start orientation), and the distortion of that map is minimized with
+`CGAL::minimize_distortion()`. With the default `Conformal_dilatation` (scale invariant) each cell
+is pulled towards the regular shape whatever its size; a measure that is not scale invariant
+(`Isometric_dilatation`, `Symmetric_dirichlet`) also keeps each cell near its start size. No cell
+that is valid at the start is ever inverted or flattened (exact predicates), so
+`mesh_quality()`'s `inverted_cells` never grows.
+
+\tparam Mesh a triangle mesh (`FaceListGraph`, planar: `positions` gives `Point_2`) or a
+        `CGAL::Mesh_complex_3_in_triangulation_3` (`positions` gives `Point_3`, keyed by
+        `Vertex_handle`; only cells in the complex count)
+\param mesh the mesh (its connectivity; not modified)
+\param positions the vertex positions: read as the start, written with the improved ones (free
+       vertices only). For a `Surface_mesh<Point_2>`, `mesh.points()` improves it in place.
+\param measure the distortion measure of the map from the ideal cells
+\param np the named parameters of `CGAL::minimize_distortion()` except `vertex_point_map` (the
+       source is the ideal cells). By default the boundary vertices are fixed; with
+       `Distortion_optimization::parameters::sliding_boundary` (e.g.
+       `Triangle_surface::from_complex_boundary(c3t3, positions)`) they slide on that surface.
+\returns the `Result` of the minimization: its energies are those of the map from the ideal cells
+\throws Invalid_input as `CGAL::minimize_distortion()`, e.g. for a flat or inverted start cell
+        under a normalized measure (`untangle_first(true)` repairs them first)
+*/
+template <class Mesh, class PositionMap, class Measure = Conformal_dilatation,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Result improve_mesh_quality(const Mesh& mesh, PositionMap positions, const Measure& measure = Measure(),
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  if constexpr(internal::Is_c3t3<Mesh>::value) {
+    auto adapter = internal::make_c3t3_adapter(mesh, positions, np);
+    internal::use_ideal_cells(adapter.map);
+    return internal::minimize_adapted(adapter, positions, measure, np);
+  } else {
+    // The start positions are the source: they give each cell its orientation and its size.
+    auto adapter = internal::make_triangle_mesh_adapter(mesh, positions, np.vertex_point_map(positions));
+    internal::use_ideal_cells(adapter.map);
+    return internal::minimize_adapted(adapter, positions, measure, np);
+  }
+}
+
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_MESH_QUALITY_H

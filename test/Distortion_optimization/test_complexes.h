@@ -1,0 +1,64 @@
+// Tetrahedral complexes for the tests that need no Mesh_3 meshing (built from tetrahedra).
+
+#ifndef DISTORTION_OPTIMIZATION_TEST_COMPLEXES_H
+#define DISTORTION_OPTIMIZATION_TEST_COMPLEXES_H
+
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace test_complexes {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point_3 = K::Point_3;
+using Tr = CGAL::Mesh_triangulation_3<CGAL::Labeled_mesh_domain_3<K>>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+using Vertex_handle = Tr::Vertex_handle;
+using Target_storage = std::unordered_map<Vertex_handle, Point_3>;
+using Target_map = boost::associative_property_map<Target_storage>;
+
+// The unit cubes [i, i+1] x [j, j+1] x [k, k+1] of an n^3 block for which keep(i, j, k), each split
+// into the 6 tetrahedra of Freudenthal's (Kuhn's) subdivision, which conform across cubes. All
+// coordinates are integers: points on faces, edges and vertices are exact.
+inline C3t3 cube_complex(int n, const std::function<bool(int, int, int)>& keep = [](int, int, int) { return true; })
+{
+  std::vector<std::array<double, 3>> points;
+  for(int k = 0; k <= n; ++k)
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i) points.push_back({double(i), double(j), double(k)});
+  const auto at = [&](int i, int j, int k) { return std::size_t((k * (n + 1) + j) * (n + 1) + i); };
+  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  std::vector<std::array<std::size_t, 4>> tets;
+  for(int k = 0; k < n; ++k)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) {
+        if(!keep(i, j, k)) continue;
+        for(const auto& p : permutations) {
+          int c[3] = {i, j, k};
+          std::array<std::size_t, 4> t;
+          t[0] = at(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s) {
+            ++c[p[s]];
+            t[s + 1] = at(c[0], c[1], c[2]);
+          }
+          tets.push_back(t);
+        }
+      }
+  C3t3 c3t3;
+  CGAL::Distortion_optimization::c3t3_from_tetrahedra(points, tets, c3t3);
+  return c3t3;
+}
+
+} // namespace test_complexes
+
+#endif // DISTORTION_OPTIMIZATION_TEST_COMPLEXES_H

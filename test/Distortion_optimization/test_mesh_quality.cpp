@@ -1,0 +1,229 @@
+// Mesh quality from distortion (paper section 4.2): mesh_quality()'s statistics on known shapes, and
+// improve_mesh_quality() on perturbed regular meshes, 2D and 3D, boundary fixed or sliding.
+
+#include "test_complexes.h"
+
+#include <CGAL/Distortion_optimization/mesh_quality.h>
+#include <CGAL/Distortion_optimization/sliding_surfaces.h>
+#include <CGAL/Distortion_optimization/volume_maps.h>
+
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/property_map/function_property_map.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <unordered_set>
+#include <vector>
+
+namespace {
+
+namespace DO = CGAL::Distortion_optimization;
+using namespace test_complexes;
+using Point_2 = K::Point_2;
+using Mesh2 = CGAL::Surface_mesh<Point_2>;
+
+// The triangular lattice of unit edges on (k + 1) rows of k + 1 points, every other row shifted
+// by one half: equilateral triangles, counterclockwise.
+Mesh2 equilateral_grid(int k)
+{
+  Mesh2 m;
+  std::vector<Mesh2::Vertex_index> v;
+  for(int j = 0; j <= k; ++j)
+    for(int i = 0; i <= k; ++i) v.push_back(m.add_vertex(Point_2(i + 0.5 * (j % 2), j * std::sqrt(3.) / 2)));
+  const auto at = [&](int i, int j) { return v[j * (k + 1) + i]; };
+  for(int j = 0; j < k; ++j)
+    for(int i = 0; i < k; ++i) {
+      if(j % 2 == 0) {   // the row above is shifted right
+        m.add_face(at(i, j), at(i + 1, j), at(i, j + 1));
+        m.add_face(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+      } else {           // the row above is shifted left
+        m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+        m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      }
+    }
+  return m;
+}
+
+std::vector<Vertex_handle> interior_vertices(const C3t3& c3t3)
+{
+  std::unordered_set<Vertex_handle> boundary;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        for(int j = 1; j < 4; ++j) boundary.insert(c->vertex((i + j) % 4));
+  std::vector<Vertex_handle> inside;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    if(!boundary.count(v) && c3t3.in_dimension(v) != -1) inside.push_back(v);
+  return inside;
+}
+
+} // namespace
+
+TEST(MeshQuality, StatisticsOfKnownShapes)
+{
+  // An equilateral triangle, a right isosceles one, apart.
+  Mesh2 m;
+  const auto add = [&m](Point_2 a, Point_2 b, Point_2 c) { m.add_face(m.add_vertex(a), m.add_vertex(b), m.add_vertex(c)); };
+  add(Point_2(0, 0), Point_2(1, 0), Point_2(0.5, std::sqrt(3.) / 2));
+  DO::Mesh_quality q = DO::mesh_quality(m, m.points());
+  EXPECT_EQ(q.cells, 1u);
+  EXPECT_NEAR(q.min_angle, 60, 1e-12);
+  EXPECT_NEAR(q.max_angle, 60, 1e-12);
+  EXPECT_NEAR(q.min_radius_ratio, 1, 1e-12);
+  EXPECT_EQ(q.slivers, 0u);
+  EXPECT_EQ(q.inverted_cells, 0u);
+  add(Point_2(2, 0), Point_2(3, 0), Point_2(2, 1));
+  q = DO::mesh_quality(m, m.points());
+  EXPECT_NEAR(q.max_angle, 90, 1e-12);
+  EXPECT_NEAR(q.min_angle, 45, 1e-12);
+  EXPECT_NEAR(q.mean_min_angle, 52.5, 1e-12);
+  // Right isosceles: r = 1 / (2 + sqrt 2), R = sqrt 2 / 2, so 2 r / R = 2 (sqrt 2 - 1).
+  EXPECT_NEAR(q.min_radius_ratio, 2 * (std::sqrt(2.) - 1), 1e-12);
+  EXPECT_NEAR(q.mean_radius_ratio, (1 + 2 * (std::sqrt(2.) - 1)) / 2, 1e-12);
+  // A flat triangle: ratio 0, a sliver, and inverted (its orientation is not the mesh's).
+  add(Point_2(4, 0), Point_2(5, 0), Point_2(6, 0));
+  q = DO::mesh_quality(m, m.points());
+  EXPECT_EQ(q.inverted_cells, 1u);
+  EXPECT_EQ(q.slivers, 1u);
+  EXPECT_EQ(q.min_radius_ratio, 0);
+
+  // The cube's Kuhn tetrahedra: dihedral angles 45, 60 and 90 degrees, 3 r / R = the same for all six.
+  const C3t3 cube = cube_complex(1);
+  Target_storage identity;
+  DO::map_vertices(cube, Target_map(identity), [](const Point_3& p) { return p; });
+  q = DO::mesh_quality(cube, Target_map(identity));
+  EXPECT_EQ(q.cells, 6u);
+  EXPECT_NEAR(q.min_angle, 45, 1e-9);
+  EXPECT_NEAR(q.max_angle, 90, 1e-9);
+  // Edges 1, sqrt 2, sqrt 3: V = 1/6, faces 2 (1/2) + 2 (sqrt 2 / 2), R = sqrt 3 / 2.
+  const double faces = 1 + std::sqrt(2.), r = 3 * (1. / 6) / faces, R = std::sqrt(3.) / 2;
+  EXPECT_NEAR(q.min_radius_ratio, 3 * r / R, 1e-12);
+  EXPECT_NEAR(q.mean_radius_ratio, 3 * r / R, 1e-12);
+  EXPECT_EQ(q.inverted_cells, 0u);
+}
+
+TEST(MeshQuality, PerturbedEquilateralGridReturnsToTheGrid)
+{
+  const Mesh2 grid = equilateral_grid(8);
+  Mesh2 mesh = grid;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for(auto v : mesh.vertices())
+    if(!mesh.is_border(v)) mesh.point(v) = Point_2(mesh.point(v).x() + u(rng), mesh.point(v).y() + u(rng));
+  const DO::Mesh_quality before = DO::mesh_quality(mesh, mesh.points());
+  ASSERT_EQ(before.inverted_cells, 0u);
+  ASSERT_LT(before.min_angle, 35);
+
+  const DO::Result r = DO::improve_mesh_quality(mesh, mesh.points(), DO::Conformal_dilatation(),
+    DO::parameters::convergence_threshold(1e-14, CGAL::parameters::number_of_iterations(500)));
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  EXPECT_NEAR(r.final_energy, 1, 1e-9);   // every triangle equilateral: K = 1
+  double error = 0;
+  for(auto v : mesh.vertices()) error = std::max(error, std::sqrt(CGAL::squared_distance(mesh.point(v), grid.point(v))));
+  EXPECT_LT(error, 1e-6);
+  for(auto v : mesh.vertices()) {
+    if(mesh.is_border(v)) {
+      EXPECT_EQ(mesh.point(v), grid.point(v));
+    }
+  }
+  const DO::Mesh_quality after = DO::mesh_quality(mesh, mesh.points());
+  EXPECT_NEAR(after.min_angle, 60, 1e-4);
+  EXPECT_NEAR(after.min_radius_ratio, 1, 1e-8);
+}
+
+TEST(MeshQuality, PerturbedCubeGridImprovesWithTheBoundaryFixedOrSliding)
+{
+  const C3t3 c3t3 = cube_complex(5);
+  Target_storage grid;
+  DO::map_vertices(c3t3, Target_map(grid), [](const Point_3& p) { return p; });
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  Target_storage start = grid;
+  for(Vertex_handle v : interior_vertices(c3t3)) {
+    const Point_3& p = grid.at(v);
+    start[v] = Point_3(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+  }
+  const DO::Mesh_quality before = DO::mesh_quality(c3t3, Target_map(start));
+  ASSERT_EQ(before.inverted_cells, 0u);
+
+  // Fixed boundary: the boundary stays to the bit, the quality rises, its minimum too.
+  Target_storage fixed = start;
+  const DO::Result r = DO::improve_mesh_quality(c3t3, Target_map(fixed));
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_LT(r.final_energy, r.initial_energy);
+  const DO::Mesh_quality after = DO::mesh_quality(c3t3, Target_map(fixed));
+  EXPECT_EQ(after.inverted_cells, 0u);
+  EXPECT_GT(after.mean_radius_ratio, before.mean_radius_ratio);
+  EXPECT_GE(after.min_radius_ratio, before.min_radius_ratio);
+  EXPECT_GE(after.min_angle, before.min_angle);
+  const auto inside = interior_vertices(c3t3);
+  std::unordered_set<Vertex_handle> interior(inside.begin(), inside.end());
+  for(const auto& [v, p] : fixed) {
+    if(!interior.count(v)) {
+      EXPECT_EQ(p, start.at(v));
+    }
+  }
+
+  // Sliding on the cube's own boundary, its corners and edges fixed (they are sharp): the boundary
+  // vertices move on the faces, and the quality rises further.
+  Target_storage sliding = start;
+  const auto on_sharp_edge = [&](Vertex_handle v) {
+    const Point_3& p = grid.at(v);
+    int on_faces = 0;
+    for(int k = 0; k < 3; ++k) on_faces += p[k] == 0 || p[k] == 5;
+    return on_faces >= 2;
+  };
+  const auto sharp = DO::sharp_boundary_vertices(c3t3, Target_map(start));
+  std::size_t on_edges = 0;
+  for(const auto& [v, p] : grid) {
+    EXPECT_EQ(sharp.count(v), std::size_t(on_sharp_edge(v)));
+    on_edges += on_sharp_edge(v);
+  }
+  EXPECT_EQ(on_edges, 8u + 12u * 4u);   // corners, and 4 inner points on each of the 12 edges
+  const auto slide = DO::improve_mesh_quality(c3t3, Target_map(sliding), DO::Conformal_dilatation(),
+    DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, Target_map(start)),
+                                     CGAL::parameters::vertex_is_constrained_map(
+                                       boost::make_function_property_map<Vertex_handle>([&](Vertex_handle v) { return sharp.count(v) > 0; }))));
+  EXPECT_EQ(slide.inverted_cells, 0u);
+  EXPECT_LT(slide.final_energy, r.final_energy);
+  std::size_t moved = 0;
+  for(const auto& [v, p] : sliding) {
+    if(interior.count(v)) continue;
+    const Point_3& g = grid.at(v);
+    // On the face of the cube it started on.
+    int kept = 0;
+    for(int k = 0; k < 3; ++k) kept += (g[k] == 0 || g[k] == 5) && std::abs(p[k] - g[k]) <= 1e-12;
+    EXPECT_GE(kept, 1);
+    if(on_sharp_edge(v)) {
+      EXPECT_EQ(p, g);
+    }
+    moved += p != g;
+  }
+  EXPECT_GT(moved, 0u);
+  EXPECT_EQ(DO::mesh_quality(c3t3, Target_map(sliding)).inverted_cells, 0u);
+}
+
+TEST(MeshQuality, AnInvertedStartIsRejectedUnlessUntangledFirst)
+{
+  const Mesh2 grid = equilateral_grid(4);
+  Mesh2 mesh = grid;
+  // An interior vertex pushed across its ring: some of its triangles invert.
+  for(auto v : mesh.vertices())
+    if(!mesh.is_border(v)) {
+      mesh.point(v) = Point_2(mesh.point(v).x() + 1.2, mesh.point(v).y());
+      break;
+    }
+  ASSERT_GT(DO::mesh_quality(mesh, mesh.points()).inverted_cells, 0u);
+  const Mesh2 copy = mesh;
+  EXPECT_THROW(DO::improve_mesh_quality(mesh, mesh.points()), DO::Invalid_input);
+  for(auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), copy.point(v));
+  const DO::Result r = DO::improve_mesh_quality(mesh, mesh.points(), DO::Conformal_dilatation(),
+                                                DO::parameters::untangle_first(true));
+  EXPECT_GT(r.inverted_start_cells, 0u);
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_EQ(DO::mesh_quality(mesh, mesh.points()).inverted_cells, 0u);
+}
