@@ -48,6 +48,8 @@ std::string usage()
   "       distortion_optimizer --source CLOSED --start ball|radial --output O.mesh\n"
   "         [--mesh-output M.mesh] [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]\n"
   "         [--carry INNER --carry-output C [--snap]] [options above]\n"
+  "       distortion_optimizer --source S --reference ideal --output O [--boundary fixed|slide]\n"
+  "         [options above]\n"
   "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
   "               vertices and cells in the same order; a planar target has z = 0; without\n"
   "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
@@ -61,6 +63,10 @@ std::string usage()
   "  --center     the centre of the start map (default: the centroid of the volume)\n"
   "  --boundary   slide (default with ball): boundary vertices move on the start's boundary\n"
   "               surface (the unit sphere for ball); fixed (default with radial)\n"
+  "  --reference  ideal: improve the shapes of S's own cells (a planar triangle mesh, z = 0,\n"
+  "               or a .mesh), measured against regular triangles or tetrahedra; O gets S with\n"
+  "               the moved vertices; --boundary fixed (default) or slide (tetrahedra: on S's\n"
+  "               boundary, sharp edges fixed); the report adds quality before and after\n"
   "  --carry      a triangle surface inside the source volume, carried through the map to\n"
   "               --carry-output (OFF/OBJ, same vertices and faces); --snap moves its vertices\n"
   "               outside the volume onto the boundary instead of refusing them\n"
@@ -99,7 +105,9 @@ struct Command_line
   std::vector<double> center;                // empty: the centroid of the volume
   bool snap = false;
   bool fix_given = false;
+  std::string reference;                     // "ideal": improve the source mesh itself
   bool volume_mode() const { return !start.empty(); }
+  bool ideal() const { return reference == "ideal"; }
   bool slides() const { return boundary == "slide" || (boundary.empty() && start == "ball"); }
 };
 
@@ -203,6 +211,7 @@ Command_line parse(int argc, char** argv)
     else if(option == "--start") c.start = value;
     else if(option == "--mesh-output") c.mesh_output = value;
     else if(option == "--boundary") c.boundary = value;
+    else if(option == "--reference") c.reference = value;
     else if(option == "--carry") c.carry = value;
     else if(option == "--carry-output") c.carry_output = value;
     else if(option == "--center") c.center = parse_point(option, value);
@@ -233,13 +242,20 @@ Command_line parse(int argc, char** argv)
   if(!c.start.empty() && c.start != "ball" && c.start != "radial")
     throw Usage_error("--start is ball or radial, not '" + c.start + "'");
   if(c.volume_mode() && !c.target.empty()) throw Usage_error("--start and --target both give the start map: give one");
-  if(in == "mesh" && c.target.empty() && !c.volume_mode())
+  if(!c.reference.empty() && !c.ideal()) throw Usage_error("--reference is ideal, not '" + c.reference + "'");
+  if(c.ideal() && (!c.target.empty() || c.volume_mode()))
+    throw Usage_error("--reference ideal improves the source itself: no --target or --start");
+  if(in == "mesh" && c.target.empty() && !c.volume_mode() && !c.ideal())
     throw Usage_error("a .mesh source needs --target (the start map) or --start");
   const std::vector<std::pair<std::string, bool>> volume_only = {
     {"--mesh-output", !c.mesh_output.empty()}, {"--cell-size", c.cell_size > 0}, {"--center", !c.center.empty()},
     {"--boundary", !c.boundary.empty()}};
   for(const auto& [option, given] : volume_only)
-    if(given && !c.volume_mode()) throw Usage_error(option + " needs --start (the volume mode)");
+    if(given && !c.volume_mode() && !(option == "--boundary" && c.ideal()))
+      throw Usage_error(option + " needs --start (the volume mode)");
+  if(c.ideal() && out == "vtu") throw Usage_error("--reference ideal writes the improved mesh: .off, .obj or .mesh");
+  if(c.ideal() && c.boundary == "slide" && in != "mesh")
+    throw Usage_error("--boundary slide with --reference ideal needs a tetrahedral mesh (.mesh)");
   if(in == "mesh" && (c.cell_size > 0)) throw Usage_error("--cell-size is for a surface source (a .mesh source is already meshed)");
   if(!c.mesh_output.empty() && DO::IO::internal::extension(c.mesh_output) != "mesh")
     throw Usage_error("--mesh-output must end in .mesh");

@@ -29,6 +29,7 @@
 #include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
+#include <CGAL/Distortion_optimization/mesh_quality.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/Distortion_optimization/volumetric_texture.h>
@@ -188,6 +189,17 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
   for(const auto& [name, value] : fields) std::printf("%-21s %s\n", name.c_str(), value.c_str());
 }
 
+// --reference ideal: the report's quality fields (angles are dihedral angles for tetrahedra).
+std::vector<std::pair<std::string, std::string>> quality_fields(const DO::Mesh_quality& before, const DO::Mesh_quality& after)
+{
+  return {{"min_dihedral_before", json_number(before.min_angle)}, {"min_dihedral_after", json_number(after.min_angle)},
+          {"mean_radius_ratio_before", json_number(before.mean_radius_ratio)},
+          {"mean_radius_ratio_after", json_number(after.mean_radius_ratio)},
+          {"min_radius_ratio_before", json_number(before.min_radius_ratio)},
+          {"min_radius_ratio_after", json_number(after.min_radius_ratio)},
+          {"slivers_before", std::to_string(before.slivers)}, {"slivers_after", std::to_string(after.slivers)}};
+}
+
 int run_triangles(const Command_line& c)
 {
   const DO::IO::Triangle_soup source = DO::IO::read_triangle_soup(c.source);
@@ -196,7 +208,10 @@ int run_triangles(const Command_line& c)
   for(const auto& p : source.points) planar = planar && p[2] == 0;
 
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
-  if(!c.target.empty()) {
+  if(c.ideal()) {
+    if(!planar) throw DO::Invalid_input(c.source + ": --reference ideal needs a planar mesh (z = 0) or a .mesh");
+    for(Vertex v : mesh.vertices()) uv[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
+  } else if(!c.target.empty()) {
     const DO::IO::Triangle_soup target = DO::IO::read_triangle_soup(c.target);
     check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "face");
     for(std::size_t i = 0; i < target.points.size(); ++i) {
@@ -232,16 +247,20 @@ int run_triangles(const Command_line& c)
   for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
 
   std::string measure_name;
+  std::vector<std::pair<std::string, std::string>> fields;
+  const DO::Mesh_quality before = c.ideal() ? DO::mesh_quality(mesh, uv) : DO::Mesh_quality();
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
     return with_boundary_guard(c, [&](bool guard) {
       auto np = DO::parameters::preserve_global_injectivity(guard, common_parameters(c)).vertex_is_constrained_map(fixed);
+      if(c.ideal()) return DO::improve_mesh_quality(mesh, uv, measure, np);
       // A planar source is compared in its own plane (so its orientation counts), a surface in
       // each triangle's frame.
       return planar ? CGAL::minimize_distortion(mesh, uv, measure, np.vertex_point_map(source_2))
                     : CGAL::minimize_distortion(mesh, uv, measure, np);
     });
   });
+  if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(mesh, uv));
 
   DO::IO::Triangle_soup output;
   output.cells = source.cells;
@@ -259,7 +278,7 @@ int run_triangles(const Command_line& c)
   } else {
     DO::IO::write_triangle_soup(c.output, output);
   }
-  report(c, mesh.number_of_faces(), mesh.number_of_vertices(), measure_name, r);
+  report(c, mesh.number_of_faces(), mesh.number_of_vertices(), measure_name, r, fields);
   return 0;
 }
 
@@ -381,8 +400,24 @@ int run_tetrahedra(const Command_line& c)
   });
 
   std::string measure_name;
+  const DO::Mesh_quality before = c.ideal() ? DO::mesh_quality(c3t3, target_map) : DO::Mesh_quality();
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
+    if(c.ideal()) {
+      if(!c.slides())
+        return with_boundary_guard(c, [&](bool guard) {
+          return c.fix == "boundary"
+            ? DO::improve_mesh_quality(c3t3, target_map, measure, common_parameters(run))
+            : DO::improve_mesh_quality(c3t3, target_map, measure,
+                DO::parameters::preserve_global_injectivity(guard, common_parameters(run)).vertex_is_constrained_map(fixed));
+        });
+      // Sliding on the mesh's own boundary, the vertices on its sharp edges fixed.
+      const auto sharp = DO::sharp_boundary_vertices(c3t3, target_map);
+      auto kept = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) { return sharp.count(v) > 0 || get(fixed, v); });
+      return DO::improve_mesh_quality(c3t3, target_map, measure,
+        DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map),
+                                         common_parameters(run).vertex_is_constrained_map(kept)));
+    }
     if(c.volume_mode() && c.slides()) {
       const auto np = common_parameters(run).vertex_is_constrained_map(fixed);
       return c.start == "ball"
@@ -423,6 +458,7 @@ int run_tetrahedra(const Command_line& c)
   }
   if(!c.mesh_output.empty()) DO::IO::write_MEDIT(c.mesh_output, source);
   std::vector<std::pair<std::string, std::string>> fields;
+  if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(c3t3, target_map));
   if(c.volume_mode() || carried) {
     std::unordered_set<Tr::Vertex_handle> boundary;
     for(auto t = c3t3.cells_in_complex_begin(); t != c3t3.cells_in_complex_end(); ++t)

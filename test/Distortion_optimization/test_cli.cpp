@@ -576,3 +576,68 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + cube, 2, "go together");
   expect_failure("--source " + cube + " --start ball --output " + temp("x.off"), 2, "--output must end in .mesh or .vtu");
 }
+
+// --reference ideal (issue 16): the source mesh itself improved against regular cells, 2D with a
+// fixed border, 3D with the boundary sliding on the source's and its sharp edges fixed.
+TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
+{
+  const std::string unused = temp("ideal_unused.off"), planar = temp("ideal_planar.off"), o = temp("ideal_out.off"),
+                    r = temp("ideal.json");
+  write_planar_pair(unused, planar, 0.03);   // the perturbed grid is the mesh to improve
+  Tool_run result = run("--source " + planar + " --reference ideal --output " + o + " --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Triangle_soup before = IO::read_triangle_soup(planar), after = IO::read_triangle_soup(o);
+  EXPECT_EQ(before.cells, after.cells);
+  for(std::size_t v = 0; v < before.points.size(); ++v) {
+    const auto& p = before.points[v];
+    if(p[0] == 0 || p[1] == 0 || p[0] == 2 || p[1] == 1) {
+      EXPECT_EQ(after.points[v], p);   // the border is fixed
+    }
+  }
+  std::string json = slurp(r);
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0.);
+  EXPECT_GT(json_value(json, "mean_radius_ratio_after"), json_value(json, "mean_radius_ratio_before"));
+  EXPECT_GE(json_value(json, "min_dihedral_after"), json_value(json, "min_dihedral_before"));
+  EXPECT_LE(json_value(json, "slivers_after"), json_value(json, "slivers_before"));
+
+  // A Mesh_3 cube (from the volume mode), improved with its boundary sliding on the cube.
+  const std::string cube = temp("ideal_cube.off"), m = temp("ideal_cube.mesh"), ball = temp("ideal_ball.mesh"),
+                    improved = temp("ideal_cube_out.mesh");
+  write_cube(cube);
+  ASSERT_EQ(run("--source " + cube + " --start ball --cell-size 0.3 --iterations 1 --output " + ball + " --mesh-output " + m).status, 0);
+  result = run("--source " + m + " --reference ideal --boundary slide --output " + improved + " --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Tetrahedron_soup source = IO::read_tetrahedron_soup(m), target = IO::read_tetrahedron_soup(improved);
+  EXPECT_EQ(source.cells, target.cells);
+  EXPECT_EQ(non_positive_tetrahedra(target), 0u);
+  std::size_t moved = 0;
+  for(std::size_t v : boundary_of(source)) {
+    const auto& p = source.points[v];
+    const auto& q = target.points[v];
+    EXPECT_NEAR(std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}), 1., 1e-12);   // on the cube
+    int on_faces = 0;
+    for(int k = 0; k < 3; ++k) on_faces += std::abs(p[k]) == 1;
+    if(on_faces >= 2) {
+      EXPECT_EQ(q, p);   // on an edge or a corner: sharp, fixed
+    }
+    moved += q != p;
+  }
+  EXPECT_GT(moved, 0u);
+  json = slurp(r);
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0.);
+  EXPECT_GT(json_value(json, "mean_radius_ratio_after"), json_value(json, "mean_radius_ratio_before"));
+  EXPECT_GT(json_value(json, "min_dihedral_after"), json_value(json, "min_dihedral_before"));
+  EXPECT_LE(json_value(json, "slivers_after"), json_value(json, "slivers_before"));
+
+  // The command line.
+  for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
+        {"--source " + planar + " --reference ideal --target " + planar, "no --target"},
+        {"--source " + planar + " --reference ideal --boundary slide", "needs a tetrahedral mesh"},
+        {"--source " + planar + " --reference regular", "--reference is ideal"},
+        {"--source " + m + " --reference ideal --output " + temp("ideal.vtu"), ".off, .obj or .mesh"}}) {
+    const std::string out = arguments.find("--output") == std::string::npos ? " --output " + temp("ideal_bad.off") : "";
+    const Tool_run bad = run(arguments + out);
+    EXPECT_EQ(bad.status, 2) << arguments << "\n" << bad.output;
+    EXPECT_NE(bad.output.find(fragment), std::string::npos) << arguments << "\n" << bad.output;
+  }
+}
