@@ -50,6 +50,8 @@ std::string usage()
   "         [--carry INNER --carry-output C [--snap]] [options above]\n"
   "       distortion_optimizer --source S --reference ideal --output O [--boundary fixed|slide]\n"
   "         [options above]\n"
+  "       distortion_optimizer --source S [--target T] --output O --subdivide N\n"
+  "         --subdivided-source S2 [--scheme linear|loop] [options above]\n"
   "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
   "               vertices and cells in the same order; a planar target has z = 0; without\n"
   "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
@@ -67,6 +69,9 @@ std::string usage()
   "               or a .mesh), measured against regular triangles or tetrahedra; O gets S with\n"
   "               the moved vertices; --boundary fixed (default) or slide (tetrahedra: on S's\n"
   "               boundary, sharp edges fixed); the report adds quality before and after\n"
+  "  --subdivide  after optimizing a triangle map, subdivide its source and its result N times\n"
+  "               (each triangle into four; --scheme linear, the default, keeps every energy,\n"
+  "               loop smooths both): O gets the refined map, S2 (OFF/OBJ) the refined source\n"
   "  --carry      a triangle surface inside the source volume, carried through the map to\n"
   "               --carry-output (OFF/OBJ, same vertices and faces); --snap moves its vertices\n"
   "               outside the volume onto the boundary instead of refusing them\n"
@@ -106,6 +111,8 @@ struct Command_line
   bool snap = false;
   bool fix_given = false;
   std::string reference;                     // "ideal": improve the source mesh itself
+  std::size_t subdivide = 0;                 // levels of subdivision of the result (triangle maps)
+  std::string scheme, subdivided_source;
   bool volume_mode() const { return !start.empty(); }
   bool ideal() const { return reference == "ideal"; }
   bool slides() const { return boundary == "slide" || (boundary.empty() && start == "ball"); }
@@ -170,6 +177,7 @@ void check_files(const Command_line& c)
   if(!c.report.empty()) outputs.emplace_back("--report", c.report);
   if(!c.mesh_output.empty()) outputs.emplace_back("--mesh-output", c.mesh_output);
   if(!c.carry_output.empty()) outputs.emplace_back("--carry-output", c.carry_output);
+  if(!c.subdivided_source.empty()) outputs.emplace_back("--subdivided-source", c.subdivided_source);
   for(const auto& [option, path] : inputs) {
     struct stat s;
     if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
@@ -212,6 +220,9 @@ Command_line parse(int argc, char** argv)
     else if(option == "--mesh-output") c.mesh_output = value;
     else if(option == "--boundary") c.boundary = value;
     else if(option == "--reference") c.reference = value;
+    else if(option == "--subdivide") c.subdivide = parse_number<std::size_t>(option, value);
+    else if(option == "--scheme") c.scheme = value;
+    else if(option == "--subdivided-source") c.subdivided_source = value;
     else if(option == "--carry") c.carry = value;
     else if(option == "--carry-output") c.carry_output = value;
     else if(option == "--center") c.center = parse_point(option, value);
@@ -263,6 +274,17 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("--boundary is slide or fixed, not '" + c.boundary + "'");
   if(c.slides() && c.fix_given && c.fix == "boundary")
     throw Usage_error("--fix boundary and --boundary slide contradict each other");
+  if(!c.scheme.empty() && c.scheme != "linear" && c.scheme != "loop")
+    throw Usage_error("--scheme is linear or loop, not '" + c.scheme + "'");
+  if((c.subdivide > 0) != !c.subdivided_source.empty())
+    throw Usage_error("--subdivide and --subdivided-source go together");
+  if(!c.scheme.empty() && c.subdivide == 0) throw Usage_error("--scheme needs --subdivide");
+  if(c.subdivide > 0 && (tetrahedra || c.ideal()))
+    throw Usage_error("--subdivide is for a triangle map (not tetrahedra, not --reference ideal)");
+  if(c.subdivide > 6) throw Usage_error("--subdivide is at most 6 (each level multiplies the triangles by 4)");
+  if(!c.subdivided_source.empty() && DO::IO::internal::extension(c.subdivided_source) != "off" &&
+     DO::IO::internal::extension(c.subdivided_source) != "obj")
+    throw Usage_error("--subdivided-source must end in .off or .obj");
   if(c.carry.empty() != c.carry_output.empty()) throw Usage_error("--carry and --carry-output go together");
   if(!c.carry.empty() && !tetrahedra) throw Usage_error("--carry needs a tetrahedral map (--start, or a .mesh source)");
   if(c.snap && c.carry.empty()) throw Usage_error("--snap needs --carry");

@@ -31,6 +31,7 @@
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 #include <CGAL/Distortion_optimization/mesh_quality.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
+#include <CGAL/Distortion_optimization/subdivide_map.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/Distortion_optimization/volumetric_texture.h>
 #include <CGAL/compute_distortion.h>
@@ -261,24 +262,50 @@ int run_triangles(const Command_line& c)
     });
   });
   if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(mesh, uv));
+  const std::size_t cells = mesh.number_of_faces(), vertices = mesh.number_of_vertices();
 
-  DO::IO::Triangle_soup output;
-  output.cells = source.cells;
-  for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
-  if(DO::IO::internal::extension(c.output) == "vtu") {
-    auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
-    DO::with_measure(c.measure, [&](const auto& measure) {
+  // The map's distortion, each face's value into per_face.
+  auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
+  const auto distortion = [&] {
+    return DO::with_measure(c.measure, [&](const auto& measure) {
       return planar ? CGAL::compute_distortion(mesh, uv, measure,
                         DO::parameters::cell_distortion_map(per_face, CGAL::parameters::vertex_point_map(source_2)))
                     : CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
     });
+  };
+  DO::IO::Triangle_soup output;
+  output.cells = source.cells;
+  if(c.subdivide > 0) {
+    // The source and the optimized map refined together (paper 4.3); the source goes to its own file.
+    DO::subdivide_map(mesh, uv, static_cast<unsigned>(c.subdivide),
+                      c.scheme == "loop" ? DO::Subdivision_scheme::LOOP : DO::Subdivision_scheme::LINEAR);
+    DO::IO::Triangle_soup refined;
+    for(Vertex v : mesh.vertices()) {
+      source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
+      refined.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+    }
+    for(auto f : mesh.faces()) {
+      std::array<std::size_t, 3> t;
+      int i = 0;
+      for(Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[i++] = std::size_t(v);
+      refined.cells.push_back(t);
+    }
+    DO::IO::write_triangle_soup(c.subdivided_source, refined);
+    output.cells = refined.cells;
+    fields.insert(fields.end(), {{"subdivided_cells", std::to_string(mesh.number_of_faces())},
+                                 {"subdivided_vertices", std::to_string(mesh.number_of_vertices())},
+                                 {"subdivided_energy", json_number(distortion().mean_volume)}});
+  }
+  for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
+  if(DO::IO::internal::extension(c.output) == "vtu") {
+    distortion();
     std::vector<double> values;
     for(auto f : mesh.faces()) values.push_back(per_face[f]);
     DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}});
   } else {
     DO::IO::write_triangle_soup(c.output, output);
   }
-  report(c, mesh.number_of_faces(), mesh.number_of_vertices(), measure_name, r, fields);
+  report(c, cells, vertices, measure_name, r, fields);
   return 0;
 }
 
@@ -489,23 +516,20 @@ int run(const Command_line& c)
     const std::string e = DO::IO::internal::extension(path);
     return e.empty() ? e : "." + e;
   };
-  DO::IO::Temporary_file output(c.output, suffix(c.output));
-  std::unique_ptr<DO::IO::Temporary_file> report;
-  if(!c.report.empty()) report = std::make_unique<DO::IO::Temporary_file>(c.report, suffix(c.report));
-  std::unique_ptr<DO::IO::Temporary_file> mesh_output, carry_output;
-  if(!c.mesh_output.empty()) mesh_output = std::make_unique<DO::IO::Temporary_file>(c.mesh_output, suffix(c.mesh_output));
-  if(!c.carry_output.empty()) carry_output = std::make_unique<DO::IO::Temporary_file>(c.carry_output, suffix(c.carry_output));
+  // The report last: it is renamed only once the map's files are.
+  const std::vector<std::string Command_line::*> outputs = {&Command_line::output, &Command_line::mesh_output,
+    &Command_line::carry_output, &Command_line::subdivided_source, &Command_line::report};
+  std::vector<std::unique_ptr<DO::IO::Temporary_file>> files(outputs.size());
   Command_line staged = c;
-  staged.output = output.path();
-  if(report) staged.report = report->path();
-  if(mesh_output) staged.mesh_output = mesh_output->path();
-  if(carry_output) staged.carry_output = carry_output->path();
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    if(!(c.*outputs[i]).empty()) {
+      files[i] = std::make_unique<DO::IO::Temporary_file>(c.*outputs[i], suffix(c.*outputs[i]));
+      staged.*outputs[i] = files[i]->path();
+    }
   const bool tetrahedra = DO::IO::internal::extension(c.source) == "mesh" || c.volume_mode();
   const int status = tetrahedra ? run_tetrahedra(staged) : run_triangles(staged);
-  output.rename_to(c.output);
-  if(mesh_output) mesh_output->rename_to(c.mesh_output);
-  if(carry_output) carry_output->rename_to(c.carry_output);
-  if(report) report->rename_to(c.report);
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    if(files[i]) files[i]->rename_to(c.*outputs[i]);
   return status;
 }
 

@@ -641,3 +641,40 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
     EXPECT_NE(bad.output.find(fragment), std::string::npos) << arguments << "\n" << bad.output;
   }
 }
+
+// --subdivide (issue 16.3): the optimized map and its source refined together; linear keeps the energy.
+TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
+{
+  const std::string s = temp("sub_source.off"), t = temp("sub_target.off"), o = temp("sub_out.off"),
+                    s2 = temp("sub_source2.off"), r = temp("sub.json");
+  write_planar_pair(s, t);
+  for(const std::string scheme : {"linear", "loop"}) {
+    const Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --subdivide 2 --scheme " + scheme +
+                                " --subdivided-source " + s2 + " --report " + r);
+    ASSERT_EQ(result.status, 0) << result.output;
+    const IO::Triangle_soup source = IO::read_triangle_soup(s), refined = IO::read_triangle_soup(s2),
+                            map = IO::read_triangle_soup(o);
+    EXPECT_EQ(refined.cells.size(), 16 * source.cells.size());
+    EXPECT_EQ(refined.cells, map.cells);
+    EXPECT_EQ(refined.points.size(), map.points.size());
+    const std::string json = slurp(r);
+    EXPECT_EQ(json_value(json, "cells"), double(source.cells.size()));
+    EXPECT_EQ(json_value(json, "subdivided_cells"), double(refined.cells.size()));
+    EXPECT_EQ(json_value(json, "subdivided_vertices"), double(refined.points.size()));
+    if(scheme == "linear") {
+      EXPECT_NEAR(json_value(json, "subdivided_energy"), json_value(json, "final_energy"), 1e-12 * json_value(json, "final_energy"));
+      for(std::size_t v = 0; v < source.points.size(); ++v) EXPECT_EQ(refined.points[v], source.points[v]);
+    } else {
+      EXPECT_GE(json_value(json, "subdivided_energy"), 1.);
+    }
+  }
+  for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
+        {" --subdivide 1", "go together"},
+        {" --scheme loop", "--scheme needs --subdivide"},
+        {" --subdivide 1 --scheme cubic --subdivided-source " + s2, "--scheme is linear or loop"},
+        {" --subdivide 1 --subdivided-source " + t, "would be overwritten"}}) {
+    const Tool_run bad = run("--source " + s + " --target " + t + " --output " + temp("sub_bad.off") + arguments);
+    EXPECT_EQ(bad.status, 2) << arguments << "\n" << bad.output;
+    EXPECT_NE(bad.output.find(fragment), std::string::npos) << arguments << "\n" << bad.output;
+  }
+}
