@@ -102,6 +102,30 @@ double mean_aspect(const Mesh& mesh, const Positions& positions)
   return sum / count;
 }
 
+// The complex's cells as indices into `points` (the positions of its vertices in order of first use).
+struct Soup
+{
+  std::vector<Point> points;
+  std::map<Vertex_handle, std::size_t> index;
+  std::vector<std::array<std::size_t, 4>> cells;
+
+  Soup(const Volume& volume, const Targets& positions)
+  {
+    for(auto c = volume.cells_in_complex_begin(); c != volume.cells_in_complex_end(); ++c) {
+      std::array<std::size_t, 4> t;
+      for(int i = 0; i < 4; ++i) {
+        auto it = index.find(c->vertex(i));
+        if(it == index.end()) {
+          it = index.emplace(c->vertex(i), points.size()).first;
+          points.push_back(positions.at(c->vertex(i)));
+        }
+        t[i] = it->second;
+      }
+      cells.push_back(t);
+    }
+  }
+};
+
 Point_2 radial(const Point_2& p) { const double r = std::sqrt(p.x() * p.x() + p.y() * p.y()); return Point_2(r * p.x(), r * p.y()); }
 Point radial(const Point& p) { const double r = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()); return Point(r * p.x(), r * p.y(), r * p.z()); }
 
@@ -231,23 +255,9 @@ void volume(int k)
       return CGAL::minimize_distortion(source, Target_map(map), m, DOP::convergence_threshold(1e-6, CGAL::parameters::number_of_iterations(300)));
     });
     const double seconds = seconds_since(start);
-    std::vector<Point> image;
-    std::map<Vertex_handle, std::size_t> index;
-    std::vector<std::array<std::size_t, 4>> cells;
-    for(auto c = source.cells_in_complex_begin(); c != source.cells_in_complex_end(); ++c) {
-      std::array<std::size_t, 4> t;
-      for(int i = 0; i < 4; ++i) {
-        auto it = index.find(c->vertex(i));
-        if(it == index.end()) {
-          it = index.emplace(c->vertex(i), image.size()).first;
-          image.push_back(map.at(c->vertex(i)));
-        }
-        t[i] = it->second;
-      }
-      cells.push_back(t);
-    }
-    print(("ours, " + measure).c_str(), cells.size(), mean_aspect(source, Target_map(map)), edge_aspect(image, cells),
-          DO::mesh_quality(source, Target_map(map)), seconds);
+    const Soup image(source, map);
+    print(("ours, " + measure).c_str(), image.cells.size(), mean_aspect(source, Target_map(map)),
+          edge_aspect(image.points, image.cells), DO::mesh_quality(source, Target_map(map)), seconds);
     if(target_boundary.is_empty()) {   // the boundary facets under the map, outward
       std::map<std::size_t, Surface::Vertex_index> vertex;
       for(auto c = source.cells_in_complex_begin(); c != source.cells_in_complex_end(); ++c)
@@ -255,9 +265,9 @@ void volume(int k)
           if(source.is_in_complex(c->neighbor(i))) continue;
           std::array<Surface::Vertex_index, 3> f;
           for(int j = 0; j < 3; ++j) {
-            const std::size_t w = index.at(c->vertex((i + 1 + j) % 4));
+            const std::size_t w = image.index.at(c->vertex((i + 1 + j) % 4));
             auto it = vertex.find(w);
-            if(it == vertex.end()) it = vertex.emplace(w, target_boundary.add_vertex(image[w])).first;
+            if(it == vertex.end()) it = vertex.emplace(w, target_boundary.add_vertex(image.points[w])).first;
             f[j] = it->second;
           }
           // Facet (i+1, i+2, i+3) is outward for even i in a positive cell.
@@ -279,23 +289,9 @@ void volume(int k)
     const double seconds = seconds_since(start);
     Targets positions;
     DO::map_vertices(meshed, Target_map(positions), [](const Point& p) { return p; });
-    std::vector<Point> pts;
-    std::map<Vertex_handle, std::size_t> index;
-    std::vector<std::array<std::size_t, 4>> cells;
-    for(auto c = meshed.cells_in_complex_begin(); c != meshed.cells_in_complex_end(); ++c) {
-      std::array<std::size_t, 4> t;
-      for(int i = 0; i < 4; ++i) {
-        auto it = index.find(c->vertex(i));
-        if(it == index.end()) {
-          it = index.emplace(c->vertex(i), pts.size()).first;
-          pts.push_back(positions.at(c->vertex(i)));
-        }
-        t[i] = it->second;
-      }
-      cells.push_back(t);
-    }
-    print(optimizers ? "Mesh_3 + ODT + perturb + exude" : "Mesh_3", cells.size(), mean_aspect(meshed, Target_map(positions)),
-          edge_aspect(pts, cells), DO::mesh_quality(meshed, Target_map(positions)), seconds);
+    const Soup soup(meshed, positions);
+    print(optimizers ? "Mesh_3 + ODT + perturb + exude" : "Mesh_3", soup.cells.size(), mean_aspect(meshed, Target_map(positions)),
+          edge_aspect(soup.points, soup.cells), DO::mesh_quality(meshed, Target_map(positions)), seconds);
   }
   std::vector<std::array<double, 3>> surface_points;
   std::vector<std::array<std::size_t, 3>> triangles;

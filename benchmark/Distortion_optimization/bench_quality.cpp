@@ -38,12 +38,6 @@ namespace {
 
 const double cells_wanted = 50000;
 
-double median(std::vector<double> x)
-{
-  std::sort(x.begin(), x.end());
-  return x[x.size() / 2];
-}
-
 struct Row
 {
   std::string name;

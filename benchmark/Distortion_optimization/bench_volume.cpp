@@ -40,12 +40,6 @@ namespace {
 
 const double cells_wanted = 50000;
 
-double median(std::vector<double> x)
-{
-  std::sort(x.begin(), x.end());
-  return x[x.size() / 2];
-}
-
 // mesh_interior() at about `cells_wanted` tetrahedra: the default sizes aim at 3.10^4, and the
 // count goes as cell_size^-3; one correction from the first mesh's count.
 template <class NamedParameters>

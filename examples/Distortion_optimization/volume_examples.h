@@ -40,6 +40,13 @@ inline double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The median of a benchmark's repeated times.
+inline double median(std::vector<double> x)
+{
+  std::sort(x.begin(), x.end());
+  return x[x.size() / 2];
+}
+
 // The cube [-h, h]^3 as 12 outward-oriented triangles.
 inline Surface cube(double h)
 {
