@@ -163,26 +163,43 @@ public:
     if(refits_ > faces_.size() / 4 + 16) rebuild(target);
   }
 
-  // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests.
-  bool is_injective(const std::vector<Vector<n>>& target) const
+  // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests. If
+  // `crossing` is given, it receives the vertices of every face that is degenerate or meets another
+  // improperly (not only the first found), so that a caller may hold them back.
+  bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr) const
   {
     using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
+    if(crossing) crossing->clear();
+    const auto report = [&](std::uint32_t f) {
+      if(crossing) crossing->insert(crossing->end(), faces_[f].begin(), faces_[f].end());
+    };
     std::vector<Box_d> boxes;
     boxes.reserve(faces_.size());
+    bool injective = true;
     for(std::uint32_t f = 0; f < faces_.size(); ++f) {
-      for(std::uint32_t v : faces_[f])
-        if(!target[v].allFinite()) return false;
-      if(is_degenerate(f, target)) return false;
+      bool finite = true;
+      for(std::uint32_t v : faces_[f]) finite = finite && target[v].allFinite();
+      if(!finite || is_degenerate(f, target)) {
+        injective = false;
+        report(f);
+        if(!crossing) return false;
+        continue;
+      }
       const Box b = face_box(f, target);
       double lo[n], hi[n];
       for(int i = 0; i < n; ++i) { lo[i] = b.min()[i]; hi[i] = b.max()[i]; }
       boxes.emplace_back(lo, hi, f);
     }
-    bool crossing = false;   // a callback cannot stop box_self_intersection_d: it just skips tests
+    // A callback cannot stop box_self_intersection_d: without `crossing`, it skips the tests once
+    // one crossing is found.
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box_d& a, const Box_d& b) {
-      if(!crossing && improper(a.info(), b.info(), target)) crossing = true;
+      if((injective || crossing) && improper(a.info(), b.info(), target)) {
+        injective = false;
+        report(a.info());
+        report(b.info());
+      }
     });
-    return !crossing;
+    return injective;
   }
 
 private:

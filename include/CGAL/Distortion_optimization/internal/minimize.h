@@ -35,6 +35,25 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
+// The boundary guard of a run with global injectivity, built for the start map, where it has work:
+// some free vertex on the boundary (null otherwise). Throws Crossing_start_boundary if the start's
+// boundary intersects itself.
+template <int n>
+std::unique_ptr<Boundary_guard<n>> make_boundary_guard(const Optimization_problem<n>& problem, const Options& options)
+{
+  if(!options.global_injectivity) return nullptr;
+  auto guard = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
+                                                   problem.number_of_vertices());
+  bool has_work = false;
+  for(std::size_t v = 0; v < problem.number_of_vertices() && !has_work; ++v)
+    has_work = problem.is_free[v] && guard->is_on_boundary(v);
+  if(!has_work) return nullptr;
+  if(!guard->is_injective(problem.map.target))
+    throw Crossing_start_boundary("the boundary of the start map intersects itself: global injectivity cannot be preserved");
+  guard->rebuild(problem.map.target);
+  return guard;
+}
+
 // The steps on one state and the iteration of the schedule that runs them: a sweep of local
 // steps, a global step, or both. Sets up the boundary guard where it has work (throws
 // Invalid_input if the start's boundary crosses itself).
@@ -48,22 +67,12 @@ public:
     : problem_(problem), options_(options), workers_(workers), free_(free_vertices(problem)),
       local_step_(state, options.solver)
   {
-    // The guard, only where it has work: some free vertex on the boundary. Those vertices share
-    // the guard, so a parallel sweep optimizes them one at a time: with Algorithm 3's interface,
-    // or after the independent sets.
-    if(options.global_injectivity)
-      guard_ = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
-                                                   problem.number_of_vertices());
+    // The vertices on the guarded boundary share the guard, so a parallel sweep optimizes them one
+    // at a time: with Algorithm 3's interface, or after the independent sets.
+    guard_ = make_boundary_guard(problem, options);
     for(std::uint32_t v : free_)
       (guard_ && guard_->is_on_boundary(v) ? guarded_vertices_ : parallel_vertices_).push_back(v);
-    if(guarded_vertices_.empty()) {
-      guard_.reset();
-    } else {
-      if(!guard_->is_injective(problem.map.target))
-        throw Crossing_start_boundary("the boundary of the start map intersects itself: global injectivity cannot be preserved");
-      guard_->rebuild(problem.map.target);
-      state.set_boundary_guard(guard_.get());
-    }
+    if(guard_) state.set_boundary_guard(guard_.get());
     if(options.schedule != Schedule::LOCAL || options.harmonic_start)
       global_step_ = std::make_unique<Global_step<State>>(state);
   }
