@@ -1,13 +1,20 @@
 // untangle() and minimize_distortion(untangle_first) on CGAL::Surface_mesh: tangled grids with
-// fixed boundaries, constraints kept to the bit, and starts with no injective map.
+// fixed boundaries, constraints kept to the bit, starts with no injective map, and CGAL's ARAP
+// parameterization of a real disk untangled with a free border.
 
 #include "test_meshes.h"
 
 #include <CGAL/Distortion_optimization/untangle.h>
 #include <CGAL/minimize_distortion.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <gtest/gtest.h>
+
+#include <string>
 
 
 using namespace test_meshes;
@@ -113,4 +120,39 @@ TEST(Untangle, NoInjectiveMapGivesAnErrorAndLeavesTheMapUnchanged)
     }
     EXPECT_EQ(g->targets(), start);
   }
+}
+
+// CGAL's ARAP parameterizer returns OK with flipped triangles on real disks. Untangled with every
+// vertex free and the guard, no triangle stays flipped, the border (which did not cross itself)
+// still does not, and minimize_distortion(untangle_first) then optimizes from there.
+TEST(Untangle, CgalArapOutputOfARealDiskIsUntangledWithAFreeBorder)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", mesh));
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  ASSERT_EQ(SMP::parameterize(mesh, SMP::ARAP_parameterizer_3<Mesh3>(), CGAL::Polygon_mesh_processing::longest_border(mesh).first, uv),
+            SMP::OK);
+  const std::size_t flipped = count_flipped(mesh, uv);
+  ASSERT_GT(flipped, 10u);
+  ASSERT_EQ(border_self_intersections(mesh, uv), 0u);
+  auto none = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
+  const std::vector<Point_2> start = targets_of(mesh, uv);
+
+  const DO::Untangle_result r = DO::untangle(mesh, uv, DO::parameters::preserve_global_injectivity(true).vertex_is_constrained_map(none));
+  EXPECT_GE(r.inverted_before, flipped);
+  EXPECT_EQ(r.inverted_after, 0u);
+  EXPECT_EQ(count_flipped(mesh, uv), 0u);
+  EXPECT_EQ(border_self_intersections(mesh, uv), 0u);
+
+  for(auto v : mesh.vertices()) uv[v] = start[v.idx()];
+  const DO::Result m = CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(),
+                                                 DO::parameters::untangle_first(true, DO::parameters::preserve_global_injectivity(true))
+                                                   .vertex_is_constrained_map(none));
+  EXPECT_EQ(m.inverted_start_cells, r.inverted_before);
+  EXPECT_EQ(m.inverted_cells, 0u);
+  EXPECT_EQ(count_flipped(mesh, uv), 0u);
+  EXPECT_EQ(border_self_intersections(mesh, uv), 0u);
+  EXPECT_NEAR(brute_force_energy(mesh, uv, "symmetric_dirichlet"), m.final_energy, 1e-9 * m.final_energy);
+  EXPECT_LT(m.final_energy, 2.);   // a Tutte start reaches about 1.6 with a free border
 }

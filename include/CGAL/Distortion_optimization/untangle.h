@@ -27,10 +27,9 @@ source triangle (decided by the `geom_traits`' exact predicates), then stops.
 
 The method is that of Garanzha, Kaporin, Kudryavtseva, Protais, Ray and Sokolov, "Foldover-free
 maps in 50 lines of code" (2021): a barrier (`Untangling_barrier`) that is finite on inverted
-cells is minimized for a decreasing regularization eps, by the steps of `CGAL::minimize_distortion()`.
-In the first rounds only the barrier keeps triangles from folding, so that a fold can open through
-flat states; from the first round that untangles no triangle on, a valid triangle is never flipped
-or flattened again. Constrained vertices never move, and with `preserve_global_injectivity` a
+cells is minimized for a decreasing regularization eps, each value by L-BFGS on the package's
+kernel and threads; only the barrier keeps cells from folding, so that a fold can open through
+flat states. Constrained vertices never move, and with `preserve_global_injectivity` a
 boundary that does not cross itself never starts to. Every orientation is decided by the
 `geom_traits`' exact predicates.
 Use `CGAL::minimize_distortion()` afterwards (or its named parameter `untangle_first`) to optimize
@@ -42,9 +41,8 @@ a measure from the untangled map.
 \param target the map to untangle; written only on success (or when the visitor stops the run),
        and only for free vertices
 \param np the named parameters of `CGAL::minimize_distortion()` that define the problem and the
-  steps (`vertex_point_map`, `vertex_is_constrained_map`, `vertex_weight_map`, `cell_weighting`,
-  `schedule`, `number_of_threads`, `parallel_sweep`, `preserve_global_injectivity`,
-  `geom_traits`), and:
+  run (`vertex_point_map`, `vertex_is_constrained_map`, `vertex_weight_map`, `cell_weighting`,
+  `number_of_threads`, `preserve_global_injectivity`, `geom_traits`; the others are ignored), and:
   - `CGAL::parameters::number_of_iterations`: the largest number of rounds (values of eps);
     default 1000
   - `CGAL::parameters::visitor`: a callable `bool(std::size_t round, double inverted_cells)`

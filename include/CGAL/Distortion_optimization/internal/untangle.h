@@ -8,17 +8,19 @@
 // and E_prev the energies after and before it and D- the smallest relative determinant,
 // sigma = max(1 - E / E_prev, 0.1), mu = (1 - sigma) chi(D-, eps), and the new eps makes
 // chi(D-, eps) = mu, i.e. eps = 2 sqrt(mu (mu - D-)) while D- < mu; so the worst cell's stand-in
-// determinant shrinks by at least 10% a round, faster when the round gained much.
+// determinant shrinks by at least 10% a round, faster when the round gained much. Ours floors
+// sigma at 0.5 rather than 0.1 and lets eps fall at most tenfold a round: on the ABCD cases
+// (benchmark/bench_untangle.sh) this takes a third to a tenth of the rounds, and a faster fall
+// collapses folds into flat strips that no later round opens.
 //
 // A cell is untangled when its orientation is its source's (exact predicate) and it is not
 // numerically flat (simplicial_map.h): a cell valid by a hair would make a normalized measure
 // infinite when the optimizer takes over.
 //
-// Unlike their L-BFGS, each round here is iterations of the package's own steps on the package's
-// own state: constrained vertices never move, and with the boundary guard the boundary never starts
-// crossing itself. While eps falls only the barrier keeps cells from folding; from its floor on, no
-// valid cell (exact predicate) is flipped or flattened any more. The run stops as soon as every
-// cell is valid; the regular measure takes over from there.
+// Each round minimizes the barrier for one eps by L-BFGS, as theirs, on the package's kernel (all
+// cells' values and gradients at once, on the workers): constrained vertices never move, sliding
+// ones stay on their surface, and with the boundary guard the boundary never starts crossing
+// itself. The run stops as soon as every cell is valid; the regular measure takes over from there.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
@@ -30,7 +32,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Distortion_optimization {
@@ -61,110 +66,243 @@ double smallest_jacobian_determinant(const Simplicial_map<n>& map, const Workers
                         [](double a, double b) { return std::min(a, b); });
 }
 
-// The map's typical det J: the ratio of its signed volume to the source's, or, for a map that is
-// mostly inverted, the mean |det J|; the barrier measures determinants relative to it.
+// The map's typical |det J|, to which the barrier relates determinants: the median over the cells.
+// Neither the signed volume ratio (a free boundary that crosses itself may enclose almost no
+// signed volume: the ABCD elephants) nor the mean |det J| (a few cells stretched a hundredfold in a
+// tangle: the bent wrench) tells the scale of the untangled map as well; the mean only stands in
+// when most cells are flat.
 template <int n>
 double typical_jacobian_determinant(const Simplicial_map<n>& map)
 {
-  double signed_sum = 0, absolute_sum = 0, volume = 0;
-  for(std::size_t c = 0; c < map.number_of_cells(); ++c) {
-    const double det = map.jacobian_determinant(c);
-    signed_sum += map.rest_volume[c] * det;
-    absolute_sum += map.rest_volume[c] * std::abs(det);
-    volume += map.rest_volume[c];
+  std::vector<double> dets(map.number_of_cells());
+  double mean = 0;
+  for(std::size_t c = 0; c < dets.size(); ++c) {
+    dets[c] = std::abs(map.jacobian_determinant(c));
+    mean += dets[c] / dets.size();
   }
-  const double typical = signed_sum > 0 ? signed_sum / volume : absolute_sum / volume;
+  if(dets.empty()) return 1.;
+  std::nth_element(dets.begin(), dets.begin() + dets.size() / 2, dets.end());
+  const double median = dets[dets.size() / 2];
+  const double typical = median > 0 ? median : mean;
   return std::isfinite(typical) && typical > 0 ? typical : 1.;
 }
 
+// The barrier's energy sum_c w(c) F_eps(J_c) at the current targets and, if `gradient` is given,
+// its gradient in the free vertices (n entries per vertex, 0 for constrained ones; for sliding
+// vertices the part in their tangent plane), on the workers; the same whatever their number.
+template <int n>
+class Barrier_energy
+{
+public:
+  Barrier_energy(const Optimization_problem<n>& problem, const Workers& workers)
+    : p_(problem), workers_(workers), value_(problem.map.number_of_cells()), cell_gradient_(value_.size()) {}
+
+  double operator()(const Untangling_barrier& barrier, Eigen::VectorXd* gradient)
+  {
+    const std::size_t nc = value_.size(), nv = p_.number_of_vertices();
+    workers_.for_each_block(nc, 1024, [&](std::size_t first, std::size_t size) {
+      cell_distortions<n>(barrier, p_.map, size, [&](std::size_t i) { return first + i; }, &value_[first],
+                          gradient ? &cell_gradient_[first] : nullptr);
+    });
+    const double energy = workers_.sum(nc, [&](std::size_t c) { return p_.cell_weight[c] * value_[c]; });
+    if(gradient) {
+      gradient->resize(n * nv);
+      workers_.for_each(nv, 1024, [&](std::size_t v) {
+        Vector<n> g = Vector<n>::Zero();
+        if(p_.is_free[v])
+          for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k)
+            g += p_.cell_weight[p_.ring[k].cell] * cell_gradient_[p_.ring[k].cell][p_.ring[k].local];
+        if(p_.slides(v)) {
+          Vector<n> normal;
+          p_.slide(p_.map.target[v], normal);
+          g -= g.dot(normal) * normal;
+        }
+        gradient->template segment<n>(n * v) = g;
+      });
+    }
+    return energy;
+  }
+
+private:
+  const Optimization_problem<n>& p_;
+  const Workers& workers_;
+  std::vector<double> value_;
+  std::vector<std::array<Vector<n>, n + 1>> cell_gradient_;
+};
+
+// Minimizes the barrier for one eps by L-BFGS (Nocedal and Wright, "Numerical optimization",
+// Algorithm 7.4, memory 8), as Garanzha et al. do, with a backtracking (Armijo) line search.
+// Sliding vertices move in their tangent planes and are projected back onto their surface at every
+// trial. With the boundary guard, a trial whose boundary would cross itself holds the vertices of
+// the crossing faces where they are and is tried again, so that one part of the boundary meeting
+// another does not stop the whole map. Stops when the gradient fell to 1e-3 of its start, when
+// `done()` (checked after each accepted step) says so, when no step is found, when five in a row
+// gain less than 1e-10 of the energy, or after `max_iterations`. `scale` carries the
+// inverse-Hessian scale from round to round; when it is 0, the first step moves no vertex farther
+// than `first_step`. Returns the number of steps taken.
+template <int n, class Done>
+std::size_t barrier_descent(Optimization_problem<n>& p, Barrier_energy<n>& energy, const Untangling_barrier& barrier,
+                            Boundary_guard<n>* guard, std::size_t max_iterations, double first_step, double& scale,
+                            const Done& done)
+{
+  constexpr int memory = 8;
+  const std::size_t nv = p.number_of_vertices();
+  Eigen::Map<Eigen::VectorXd> x(p.map.target.data()->data(), n * nv);
+  Eigen::VectorXd g, g_new, d, x0;
+  std::vector<Eigen::VectorXd> s, y;
+  std::vector<double> rho;
+  std::vector<std::uint32_t> crossing;
+  double e = energy(barrier, &g);
+  const double g_start = g.norm();
+  if(!(scale > 0)) scale = first_step / std::max(g.lpNorm<Eigen::Infinity>(), 1e-300);
+  constexpr double gtol = 1e-3;
+  std::size_t steps = 0, stalled = 0;
+  for(; steps < max_iterations && g.norm() > gtol * g_start; ++steps) {
+    // The two-loop recursion: d = -H g.
+    d = -g;
+    std::vector<double> alpha(s.size());
+    for(std::size_t i = s.size(); i-- > 0;) {
+      alpha[i] = rho[i] * s[i].dot(d);
+      d -= alpha[i] * y[i];
+    }
+    d *= scale;
+    for(std::size_t i = 0; i < s.size(); ++i) d += (alpha[i] - rho[i] * y[i].dot(d)) * s[i];
+    double slope = g.dot(d);
+    if(!(slope < 0)) {   // a stale memory: start it again
+      s.clear(), y.clear(), rho.clear();
+      d = -scale * g;
+      slope = g.dot(d);
+    }
+    x0 = x;
+    bool accepted = false;
+    std::size_t holds = 0;
+    double e_new = e;
+    for(double t = 1; !accepted && t > 1e-12; t *= 0.5) {
+      x = x0 + t * d;
+      if(!p.is_sliding.empty())
+        for(std::size_t v = 0; v < nv; ++v)
+          if(p.slides(v)) {
+            Vector<n> normal;
+            p.map.target[v] = p.slide(p.map.target[v], normal);
+          }
+      if(guard && !guard->is_injective(p.map.target, &crossing)) {
+        // The boundary would cross itself: hold the vertices of the crossing faces where they are
+        // and try the same step again (a shorter one after many holds).
+        for(std::uint32_t v : crossing) d.template segment<n>(n * v).setZero();
+        if(!((slope = g.dot(d)) < 0)) break;
+        if(++holds <= 64) t *= 2;
+        continue;
+      }
+      e_new = energy(barrier, &g_new);
+      accepted = e_new <= e + 1e-4 * t * slope;
+    }
+    if(!accepted) {
+      x = x0;
+      break;
+    }
+    if(guard) guard->rebuild(p.map.target);
+    Eigen::VectorXd sk = x - x0, yk = g_new - g;
+    const double sy = sk.dot(yk);
+    if(sy > 1e-12 * sk.norm() * yk.norm()) {
+      if(s.size() == memory) s.erase(s.begin()), y.erase(y.begin()), rho.erase(rho.begin());
+      scale = sy / yk.squaredNorm();
+      s.push_back(std::move(sk)), y.push_back(std::move(yk)), rho.push_back(1 / sy);
+    }
+    stalled = e - e_new > 1e-10 * std::abs(e) ? 0 : stalled + 1;
+    e = e_new;
+    g.swap(g_new);
+    if(stalled >= 5) break;
+    if(done()) {
+      ++steps;
+      break;
+    }
+  }
+  return steps;
+}
+
 // Untangles problem.map in place (the whole map; untangle() below first tries the tangle's
-// surroundings). options.iterations bounds the rounds (values of eps); a round
-// runs the schedule's iterations until one gains less than 1e-5 of the barrier, at most 200; the
-// visitor is called after each round with the round and the number of cells still inverted, and
-// may stop the run there. Throws Invalid_input, with the map unchanged, when some inverted cell
-// has only constrained vertices, or when the rounds end with inverted cells (no injective map may
-// exist with these constraints).
+// surroundings). options.iterations bounds the rounds (values of eps); a round minimizes the
+// barrier for its eps (barrier_descent, at most 1000 steps, 200 in a part); the visitor is called after each
+// round with the round and the number of cells still inverted, and may stop the run there. Throws
+// Invalid_input, with the map unchanged, when some inverted cell has only constrained vertices, or
+// when the rounds end with inverted cells (no injective map may exist with these constraints).
 template <int n, class GeomTraits>
 Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const GeomTraits& traits, Options options,
                                     bool throw_on_failure = true)
 {
   const auto start = std::chrono::steady_clock::now();
   const Workers workers(options.threads);
-  Untangling_barrier barrier;
-  barrier.reference_det = typical_jacobian_determinant(problem.map);
-  using State = Optimizer_state<n, Untangling_barrier, GeomTraits>;
-  // First as Garanzha et al.: only the barrier keeps cells from folding, so that a fold can open
-  // through flat states. Once eps is at its floor, no valid cell may flip any more (the optimizer's
-  // own guarantee), so that the count of inverted cells only falls.
-  State state(problem, barrier, traits, workers, false);
-  // The state counts the cells inverted by the exact predicate; those valid but numerically flat
-  // are untangled too.
-  const auto tangled = [&] {
-    return state.number_of_inverted_cells() +
-           workers.reduce(problem.map.number_of_cells(), std::size_t(0),
-                          [&](std::size_t c) { return std::size_t(state.is_valid(c) && is_numerically_flat(problem.map, c)); },
+  const std::size_t nc = problem.map.number_of_cells();
+  const auto count = [&](const auto& is_counted) {
+    return workers.reduce(nc, std::size_t(0), [&](std::size_t c) { return std::size_t(is_counted(c)); },
                           [](std::size_t a, std::size_t b) { return a + b; });
   };
+  const auto tangled = [&] { return count([&](std::size_t c) { return is_tangled(problem.map, c, traits); }); };
   Untangle_report report;
   report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
-  for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c) {
+  for(std::size_t c = 0; c < nc; ++c) {
     bool moves = false;
     for(auto v : problem.map.cells[c]) moves = moves || problem.is_free[v];
-    if(!moves && (!state.is_valid(c) || is_numerically_flat(problem.map, c)))
+    if(!moves && is_tangled(problem.map, c, traits))
       throw Invalid_input("cell " + std::to_string(c) + " is inverted or flat and all its vertices are constrained: "
                           "no map with these constraints is injective");
   }
+  std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);
+  Untangling_barrier barrier;
+  barrier.reference_det = typical_jacobian_determinant(problem.map);
+  Barrier_energy<n> energy(problem, workers);
+  // The first step moves a vertex by a tenth of a typical edge.
+  double volume = 0;
+  for(double v : problem.map.rest_volume) volume += v;
+  const double edge = std::pow(volume / nc * barrier.reference_det, 1. / n), floor = n == 2 ? 1e-9 : 1e-10;
+  double scale = 0;
   const std::vector<Vector<n>> start_targets = problem.map.target;
   std::vector<Vector<n>> best_targets = start_targets;
-  std::size_t fewest = report.inverted_before;
-  options.harmonic_start = false;
-  Steps<State> steps(state, problem, options, workers);
-
-  // eps is relative to the typical determinant, as D- below; the floor is the paper's.
-  const double floor = n == 2 ? 1e-9 : 1e-10;
-  std::size_t rounds_without_progress = 0;
+  std::size_t fewest = report.inverted_before, rounds_without_progress = 0;
+  std::size_t lowest = std::numeric_limits<std::size_t>::max(), rounds_since_low = 0;
+  // Checked after every step: the exact count only once no cell is numerically flat any more.
+  const auto untangled = [&] { return count([&](std::size_t c) { return is_numerically_flat(problem.map, c); }) == 0 && tangled() == 0; };
+  // A part (throw_on_failure false) gains more from lowering eps often than from converging each
+  // round: 200 steps a round untangle CGAL's ARAP map of lion-head 7 times faster than 1000. The
+  // whole map keeps 1000: 200 leave half the cells of the ABCD 30K elephant inverted.
+  const std::size_t steps_per_round = throw_on_failure ? 1000 : 200;
   while(report.iterations < options.iterations) {
     ++report.iterations;
-    const double before = state.energy();
+    const double before = energy(barrier, nullptr);
+    barrier_descent(problem, energy, barrier, guard.get(), steps_per_round, 0.1 * edge, scale, untangled);
+    const double after = energy(barrier, nullptr);
     const std::size_t inverted_before = report.inverted_after;
-    double energy = before;
-    for(int k = 0; k < 200; ++k) {
-      const double previous = energy;
-      steps.iterate();
-      energy = state.energy();
-      if(tangled() == 0 || !(previous - energy > 1e-5 * std::abs(previous))) break;
-    }
     report.inverted_after = tangled();
     if(options.visitor && !options.visitor(report.iterations, static_cast<double>(report.inverted_after))) {
       report.stopped_by_visitor = true;
       break;
     }
     if(report.inverted_after == 0) break;
-    // The paper's eps rule, on determinants relative to the typical one; our rounds converge less
-    // far than their L-BFGS, so eps falls at most tenfold a round (a faster fall collapses folds
-    // into flat strips that no later round opens).
-    const double worst = smallest_jacobian_determinant(problem.map, workers) / barrier.reference_det;
-    const double e = barrier.epsilon, root = std::sqrt(e * e + worst * worst);
-    const double chi = Untangling_barrier::regularized_determinant(worst, e * e, root);
-    const double sigma = std::max(before > 0 ? 1 - energy / before : 0., 0.1), mu = (1 - sigma) * chi;
-    barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
+    // Rounds since this run's count last fell a tenth below its low (the first rounds may tangle
+    // more cells than the start had, on their way to fewer): a part that only creeps gives way.
+    if(report.inverted_after < 0.9 * lowest) {
+      lowest = report.inverted_after;
+      rounds_since_low = 0;
+    } else {
+      ++rounds_since_low;
+    }
     if(report.inverted_after < fewest) {
       fewest = report.inverted_after;
       best_targets = problem.map.target;
     }
-    if(barrier.epsilon <= floor && !state.keeps_valid_cells()) {
-      // The protected phase starts from the map with the fewest inverted cells seen, so that the
-      // run never ends with more than the start had.
-      problem.map.target = best_targets;
-      state.keep_valid_cells(true);
-      state.revalidate();
-      steps.targets_replaced();
-    }
-    state.refresh();
+    // Garanzha et al.'s rule, on determinants relative to the typical one.
+    const double worst = smallest_jacobian_determinant(problem.map, workers) / barrier.reference_det;
+    const double e = barrier.epsilon, root = std::sqrt(e * e + worst * worst);
+    const double chi = Untangling_barrier::regularized_determinant(worst, e * e, root);
+    const double sigma = std::max(before > 0 ? 1 - after / before : 0., 0.5), mu = (1 - sigma) * chi;
+    barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
     // Stuck: eps at its floor and no cell untangled for a while.
     rounds_without_progress = barrier.epsilon <= floor && report.inverted_after >= inverted_before ? rounds_without_progress + 1 : 0;
     if(rounds_without_progress >= 20) break;
+    // A part (throw_on_failure false) may have no injective map within its fixed surroundings: it
+    // gives way to a wider one once three rounds brought no new low.
+    if(!throw_on_failure && rounds_since_low >= 3) break;
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(report.inverted_after > 0 && !report.stopped_by_visitor && !throw_on_failure) {
@@ -181,14 +319,14 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   return report;
 }
 
-// Untangles problem.map in place, as untangle_everywhere(). A few inverted cells in a large map
-// (the tangles of a deformation, the flat cells a ball map leaves along the sharp edges of a
-// domain) are first untangled in the part of the map within one ring of them, a problem the size
-// of the tangle, then within two and three rings of those still inverted, each attempt starting
-// from the best map of the last; the whole map only if cells remain inverted. Not with the
-// boundary guard, which must see the whole boundary.
+// Untangles problem.map in place without the boundary guard, as untangle_everywhere(). A few
+// inverted cells in a large map (the tangles of a deformation, the flat cells a ball map leaves
+// along the sharp edges of a domain) are first untangled in the part of the map within one ring
+// of them, a problem the size of the tangle, then within 2, 4, ..., 32 rings of those still
+// inverted (a part gives up after three rounds without its count falling a tenth below its low),
+// each attempt starting from the best map of the last; the whole map only if cells remain inverted.
 template <int n, class GeomTraits>
-Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto inverted_vertices = [&](std::vector<unsigned char>& region) {
@@ -204,10 +342,10 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
   std::vector<unsigned char> region;
   Untangle_report report;
   report.inverted_before = report.inverted_after = inverted_vertices(region);
-  if(report.inverted_before == 0 || options.global_injectivity || 20 * report.inverted_before > problem.map.number_of_cells())
+  if(report.inverted_before == 0 || 20 * report.inverted_before > problem.map.number_of_cells())
     return untangle_everywhere(problem, traits, options);
   const std::vector<Vector<n>> start_targets = problem.map.target;
-  for(int rings = 1; rings <= 3 && report.inverted_after > 0; ++rings) {
+  for(int rings = 1; rings <= 32 && report.inverted_after > 0; rings *= 2) {
     if(rings > 1) inverted_vertices(region);
     for(int k = 0; k < rings; ++k) {
       // One more ring: every vertex of a cell that touches the region.
@@ -245,8 +383,42 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
   return report;
 }
 
+// Untangles problem.map in place: untangle_in_parts(), and with the boundary guard (options'
+// global_injectivity, some free boundary vertex) first without it, keeping that result if its
+// boundary does not cross itself (exact test). Holding the guard from the start costs the barrier
+// its freedom where a fold presses against the boundary: on CGAL's ARAP map of lion-head, a few
+// cells squeezed there stay inverted with the guard and open without it, the boundary uncrossed.
+// Only when the boundary then crosses does the guarded run start again from the start map.
+template <int n, class GeomTraits>
+Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+{
+  std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);   // throws if the start crosses
+  if(!guard) return untangle_in_parts(problem, traits, options);
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Vector<n>> start_targets = problem.map.target;
+  Options unguarded = options;
+  unguarded.global_injectivity = false;
+  Untangle_report report;
+  try {
+    report = untangle_in_parts(problem, traits, unguarded);
+    if((report.inverted_after == 0 || report.stopped_by_visitor) && guard->is_injective(problem.map.target)) return report;
+  } catch(const Invalid_input&) {
+  }
+  problem.map.target = start_targets;
+  if(report.stopped_by_visitor) {
+    report.inverted_after = report.inverted_before;
+    return report;
+  }
+  const std::size_t unguarded_rounds = report.iterations;
+  report = untangle_everywhere(problem, traits, options);
+  report.iterations += unguarded_rounds;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
 } // namespace internal
 } // namespace Distortion_optimization
 } // namespace CGAL
 
 #endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
+
