@@ -4,7 +4,8 @@
 # case: inverted cells before and after, the untangling time and rounds, the time of the
 # optimization that follows, and the final energy (K for tetrahedra, symmetric Dirichlet for
 # triangles). Anchored vertices (the *_anchors.txt files) are fixed; the planar and UV cases have a
-# free boundary (their boundaries cross: the tool then warns and runs without the guard).
+# free boundary: the elephants' boundaries cross (the tool then warns and runs without the guard),
+# the octopus UV's does not (the guard keeps it so).
 #
 #   bash benchmark/Distortion_optimization/bench_untangle.sh [data_dir [threads]]
 #   (default data dir: ../shared/data/abcd beside the repository; run after scripts/test.sh)
