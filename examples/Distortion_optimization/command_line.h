@@ -45,6 +45,7 @@ std::string usage()
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
   "         [--threads N] [--report R.json] [--schedule alternating|local|global] [--untangle]\n"
+  "         [--quiet|--verbose] [--time-limit SECONDS]\n"
   "       distortion_optimizer --source CLOSED --start ball|radial --output O.mesh\n"
   "         [--mesh-output M.mesh] [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]\n"
   "         [--carry INNER --carry-output C [--snap]] [options above]\n"
@@ -89,7 +90,11 @@ std::string usage()
   "  --untangle   when the start has inverted or flat cells, untangle it first (then optimize);\n"
   "               without it such a start is refused under a measure infinite there\n"
   "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
-  "               harmonic start), local (the paper's sweeps only) or global\n";
+  "               harmonic start), local (the paper's sweeps only) or global\n"
+  "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
+  "               seconds); the default when stderr is a terminal; --quiet: none\n"
+  "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
+  "               started, and write that map (the report says stopped_by_time_limit)\n";
 }
 
 struct Usage_error : std::runtime_error
@@ -104,6 +109,8 @@ struct Command_line
   std::size_t iterations = 100, threads = 1;
   double threshold = 1e-4;
   bool untangle = false;
+  bool quiet = false, verbose = false;       // progress lines: neither given = when stderr is a terminal
+  double time_limit = 0;                     // 0: none
   // Volume mode (--start): the start map, where the meshed source and the carried surface go.
   std::string start, mesh_output, boundary, carry, carry_output;
   double cell_size = 0;                      // 0: mesh_interior's default
@@ -124,8 +131,9 @@ T parse_number(const std::string& option, const std::string& text)
   std::istringstream in(text);
   T value;
   if(!(in >> value) || !in.eof()) throw Usage_error(option + " expects a number, not '" + text + "'");
-  // An unsigned read of "-5" wraps around instead of failing.
-  if(text.find('-') != std::string::npos && !(value < 0)) throw Usage_error(option + " must not be negative");
+  // An unsigned read of "-5" wraps around instead of failing; "1e-5" is positive.
+  const std::size_t first = text.find_first_not_of(" \t");
+  if(value < 0 || (first != std::string::npos && text[first] == '-')) throw Usage_error(option + " must not be negative");
   return value;
 }
 
@@ -201,8 +209,8 @@ Command_line parse(int argc, char** argv)
   for(int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if(option == "--help" || option == "-h") throw Usage_error("");
-    if(option == "--untangle" || option == "--snap") {   // the options without a value
-      bool& flag = option == "--untangle" ? c.untangle : c.snap;
+    if(option == "--untangle" || option == "--snap" || option == "--quiet" || option == "--verbose") {   // no value
+      bool& flag = option == "--untangle" ? c.untangle : option == "--snap" ? c.snap : option == "--quiet" ? c.quiet : c.verbose;
       if(flag) throw Usage_error(option + " is given twice");
       flag = true;
       continue;
@@ -236,6 +244,10 @@ Command_line parse(int argc, char** argv)
     else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
     else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
     else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
+    else if(option == "--time-limit") {
+      c.time_limit = parse_number<double>(option, value);
+      if(!(c.time_limit > 0) || !std::isfinite(c.time_limit)) throw Usage_error("--time-limit must be a positive number of seconds");
+    }
     else throw Usage_error("unknown option " + option);
   }
   if(c.source.empty()) throw Usage_error("--source is required");
@@ -245,6 +257,7 @@ Command_line parse(int argc, char** argv)
   if(c.schedule != "alternating" && c.schedule != "local" && c.schedule != "global")
     throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
   if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
+  if(c.quiet && c.verbose) throw Usage_error("--quiet and --verbose contradict each other");
   const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
   const bool tetrahedra = in == "mesh" || c.volume_mode();
   if(tetrahedra ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))

@@ -2,7 +2,8 @@
 //
 //   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
 //                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
-//                        [--schedule alternating|local|global] [--untangle]
+//                        [--schedule alternating|local|global] [--untangle] [--quiet|--verbose]
+//                        [--time-limit SECONDS]
 //   distortion_optimizer --source CLOSED --start ball|radial --output O.mesh [--mesh-output M.mesh]
 //                        [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]
 //                        [--carry INNER --carry-output C [--snap]] [options above]
@@ -65,6 +66,7 @@
 #include <vector>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace DO = CGAL::Distortion_optimization;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -140,6 +142,39 @@ DO::Result with_boundary_guard(const Command_line& c, const Run& run)
   }
 }
 
+// The visitor of every optimization: a progress line per iteration on stderr (--verbose, or
+// stderr a terminal without --quiet) and the stop at --time-limit. Copies share one clock, which
+// starts with the first copy's run.
+class Progress
+{
+public:
+  explicit Progress(const Command_line& c)
+    : show_(c.verbose || (!c.quiet && ::isatty(STDERR_FILENO))), limit_(c.time_limit), state_(std::make_shared<State>()) {}
+
+  bool operator()(std::size_t iteration, double energy) const
+  {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - state_->start).count();
+    if(show_) {
+      char decrease[32] = "-";   // the visitor is not told the start's energy
+      if(iteration == 1) std::fprintf(stderr, "%9s %18s %11s %9s\n", "iteration", "energy", "decrease", "seconds");
+      else std::snprintf(decrease, sizeof decrease, "%.3e", (state_->energy - energy) / std::abs(state_->energy));
+      std::fprintf(stderr, "%9zu %18.10g %11s %9.3f\n", iteration, energy, decrease, seconds);
+    }
+    state_->energy = energy;
+    return !(limit_ > 0 && seconds >= limit_);
+  }
+
+private:
+  struct State
+  {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double energy = 0;
+  };
+  bool show_;
+  double limit_;
+  std::shared_ptr<State> state_;
+};
+
 // The options both kinds of mesh share.
 auto common_parameters(const Command_line& c)
 {
@@ -149,7 +184,7 @@ auto common_parameters(const Command_line& c)
   return DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)),
     DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::untangle_first(c.untangle,
       DO::parameters::convergence_threshold(c.threshold)))))
-    .number_of_iterations(c.iterations);
+    .number_of_iterations(c.iterations).visitor(Progress(c));
 }
 
 std::string json_number(double x)
@@ -170,6 +205,7 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
        << ",\n  \"final_energy\": " << json_number(r.final_energy) << ",\n  \"sweeps\": " << r.iterations
        << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"inverted_cells\": " << r.inverted_cells
        << ",\n  \"converged\": " << (r.converged ? "true" : "false")
+       << ",\n  \"stopped_by_time_limit\": " << (r.stopped_by_visitor ? "true" : "false")
        << ",\n  \"inverted_start_cells\": " << r.inverted_start_cells << ",\n  \"untangle_iterations\": "
        << r.untangle_iterations << ",\n  \"untangle_seconds\": " << json_number(r.untangle_seconds)
        ;
@@ -184,6 +220,7 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
               "final_energy    %.12g\nsweeps          %zu\nseconds         %.3f\ninverted_cells  %zu\n",
               cells, vertices, measure_name.c_str(), r.initial_energy, r.final_energy, r.iterations, r.seconds,
               r.inverted_cells);
+  if(r.stopped_by_visitor) std::printf("stopped_by_time_limit true\n");
   if(c.untangle || c.volume_mode())
     std::printf("inverted_start_cells  %zu\nuntangle_iterations   %zu\nuntangle_seconds      %.3f\n", r.inverted_start_cells,
                 r.untangle_iterations, r.untangle_seconds);

@@ -249,6 +249,66 @@ TEST(CommandLine, UntangleThenOptimize)
   }
 }
 
+TEST(CommandLine, ProgressLinesAndTimeLimit)
+{
+  const std::string o = temp("lion_progress.off"), r = temp("lion_progress.json");
+  const std::string common = "--source " + data("lion-head.off") + " --output " + o + " --measure symmetric_dirichlet --report " + r;
+  // --verbose: a header, then one line per iteration whose energies are the report's.
+  Tool_run result = run(common + " --verbose");
+  ASSERT_EQ(result.status, 0) << result.output;
+  std::string json = slurp(r);
+  const std::size_t sweeps = static_cast<std::size_t>(json_value(json, "sweeps"));
+  std::istringstream lines(result.output);
+  std::string line;
+  std::size_t rows = 0;
+  double last = 0;
+  while(std::getline(lines, line)) {
+    std::istringstream fields(line);
+    std::size_t iteration;
+    double energy, seconds;
+    std::string decrease;   // "-" on the first line
+    if(fields >> iteration >> energy >> decrease >> seconds) {
+      EXPECT_EQ(iteration, ++rows) << line;
+      last = energy;
+    }
+  }
+  EXPECT_NE(result.output.find("iteration"), std::string::npos) << result.output;
+  EXPECT_EQ(rows, sweeps) << result.output;
+  EXPECT_NEAR(last, json_value(json, "final_energy"), 1e-9 * last) << result.output;
+  EXPECT_EQ(json.find("\"stopped_by_time_limit\": true"), std::string::npos) << json;
+  // Not a terminal and no --verbose, or --quiet: no progress.
+  EXPECT_EQ(run(common).output.find("iteration"), std::string::npos);
+  EXPECT_EQ(run(common + " --quiet").output.find("iteration"), std::string::npos);
+  EXPECT_EQ(run(common + " --quiet --verbose").status, 2);
+  EXPECT_EQ(run(common + " --time-limit 0").status, 2);
+  EXPECT_EQ(run(common + " --time-limit nan").status, 2);
+
+  // A limit that the first iteration already passes (an exponent with a minus is a positive
+  // number): one iteration, its map written whole.
+  result = run(common + " --time-limit 1e-9");
+  ASSERT_EQ(result.status, 0) << result.output;
+  json = slurp(r);
+  EXPECT_EQ(json_value(json, "sweeps"), 1) << json;
+  EXPECT_NE(json.find("\"stopped_by_time_limit\": true"), std::string::npos) << json;
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0) << json;
+  EXPECT_LT(json_value(json, "final_energy"), json_value(json, "initial_energy")) << json;
+  EXPECT_EQ(IO::read_triangle_soup(o).cells, IO::read_triangle_soup(data("lion-head.off")).cells);
+}
+
+// The usage the manual shows is the tool's --help, to the character.
+TEST(CommandLine, TheManualShowsTheToolsUsage)
+{
+  const Tool_run help = run("--help");
+  ASSERT_EQ(help.status, 0) << help.output;
+  const std::string manual = slurp(DISTORTION_OPTIMIZATION_MANUAL);
+  const std::size_t begin = manual.find("\\verbatim\nusage: distortion_optimizer");
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t start = begin + std::string("\\verbatim\n").size();
+  const std::size_t end = manual.find("\\endverbatim", start);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(manual.substr(start, end - start), help.output);
+}
+
 TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
 {
   const std::string s = temp("s3.off"), t = temp("t3.off"), o = temp("o3.off");
