@@ -51,7 +51,10 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/nefertiti.off \
   data/meshes/three_peaks.off \
   data/meshes/bunny00.off \
-  data/meshes/blobby.off
+  data/meshes/blobby.off \
+  data/meshes/pig.stl \
+  data/meshes/sphere.ply \
+  data/meshes/sphere.stl
 
 extract "$DOC_DIR/examples.tar.gz" \
   examples/Tetrahedral_remeshing/data/sphere.mesh

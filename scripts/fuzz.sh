@@ -10,7 +10,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds="${1:-600}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT read_vertex_list command_line)
+[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT_soup read_vertex_list command_line)
 
 missing=()
 for pkg in clang libclang-rt-14-dev libeigen3-dev libcgal-dev libboost-dev libgmp-dev libmpfr-dev libcgal-demo; do
@@ -44,7 +44,7 @@ for reader in "${targets[@]}"; do
       printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf -1 -2 -3\n' > "$dir/corpus/triangle.obj"
       printf '# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n' > "$dir/corpus/square.obj"
       printf '\xef\xbb\xbfv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n' > "$dir/corpus/bom.obj" ;;
-    read_MEDIT)
+    read_MEDIT_soup)
       cp build/data/*.mesh "$dir/corpus/" 2>/dev/null || true
       printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 1\nEnd\n' > "$dir/corpus/tet.mesh" ;;
     read_vertex_list)

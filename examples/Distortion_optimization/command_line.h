@@ -9,6 +9,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -29,7 +30,8 @@ std::string usage()
   const auto& known = DO::measure_names();
   std::vector<std::string> words(known.begin(), known.end());
   words.front() += " (default)";
-  words.push_back("or a product such as " + known[0] + "*" + known[3]);
+  words.push_back("a product such as " + known[0] + "*" + known[3]);
+  words.push_back("or a weighted sum such as 0.5*" + known[0] + "+" + known[3]);
   std::string names;
   std::size_t column = 15;   // where the text of NAME starts
   for(const std::string& word : words) {
@@ -45,7 +47,10 @@ std::string usage()
   "usage: distortion_optimizer --source S [--target T] --output O [--measure NAME]\n"
   "         [--fix boundary|none|FILE] [--iterations N] [--threshold EPS] [--solver gd|bfgs]\n"
   "         [--threads N] [--report R.json] [--schedule alternating|local|global] [--untangle]\n"
-  "         [--quiet|--verbose] [--time-limit SECONDS]\n"
+  "         [--quiet|--verbose] [--time-limit SECONDS] [--flat-output F]\n"
+  "         [--svg P.svg [--svg-both]] [--energy-plot E.svg] [--vertex-weights FILE]\n"
+  "         [--cell-weighting average|volume|uniform] [--order sorted|greedy]\n"
+  "         [--parallel-sweep sets|partition] [--harmonic-start on|off]\n"
   "       distortion_optimizer --source CLOSED --start ball|radial --output O.mesh\n"
   "         [--mesh-output M.mesh] [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]\n"
   "         [--carry INNER --carry-output C [--snap]] [options above]\n"
@@ -53,10 +58,18 @@ std::string usage()
   "         [options above]\n"
   "       distortion_optimizer --source S [--target T] --output O --subdivide N\n"
   "         --subdivided-source S2 [--scheme linear|loop] [options above]\n"
-  "  S, T, O      OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same\n"
-  "               vertices and cells in the same order; a planar target has z = 0; without\n"
-  "               --target a triangulated disk gets a Tutte start; O may be .vtu (the map with\n"
-  "               each cell's distortion, for ParaView)\n"
+  "  S, T, O      triangle meshes (OFF, OBJ; S and T also PLY, STL or GOCAD .ts, read by CGAL)\n"
+  "               or tetrahedral meshes (Medit .mesh; S and T also TetGen .ele with its .node),\n"
+  "               with the same vertices and cells in the same order; a planar target has z = 0;\n"
+  "               without --target a triangulated disk gets a Tutte start; O may be .vtu (the\n"
+  "               map with each cell's distortion and each vertex's displacement from the source,\n"
+  "               for ParaView: warp by -1 shows a surface). A surface's map is a parametrization:\n"
+  "               O.obj gets the surface with its UVs (vt, f v/vt), T.obj may give them so\n"
+  "  --flat-output  a triangle map's result as a flat mesh (u, v, 0) too (.off or .obj)\n"
+  "  --svg        a picture of the result, each cell coloured by its distortion (viridis; red:\n"
+  "               inverted): a triangle map's target, or the section of a tetrahedral map's\n"
+  "               target by the plane z = middle; --svg-both draws the source beside it\n"
+  "  --energy-plot  the energy of the start and after each iteration, as an SVG plot\n"
   "  --start      volume mode: the inside of CLOSED (a closed OFF/OBJ surface, meshed with\n"
   "               CGAL Mesh_3, or a .mesh) is mapped onto the unit ball (ball: star-shaped\n"
   "               about the centre) or by x |x| about the centre (radial), then optimized; a\n"
@@ -84,6 +97,16 @@ std::string usage()
   "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
   "               energy above the measure's minimum (default 1e-4)\n"
   "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
+  "  --vertex-weights  a file of one positive weight per line, per vertex in the source's order\n"
+  "               (the paper's omega(v), eq. 23; default 1)\n"
+  "  --cell-weighting  the cell weights w(c, v) of eq. 23: average (default, volume / vertices),\n"
+  "               volume or uniform\n"
+  "  --order      sorted (default: the vertices sorted by distortion once per sweep) or greedy\n"
+  "               (the paper's Algorithm 2: the most distorted first, one thread)\n"
+  "  --parallel-sweep  with threads: sets (default, independent sets of vertices) or partition\n"
+  "               (the paper's Algorithm 3)\n"
+  "  --harmonic-start  on (default, except with --schedule local) or off: start from the\n"
+  "               harmonic map of the fixed vertices where it is valid and better\n"
   "  --threads    number of threads (default 1); the output is the same for every run with\n"
   "               the same number\n"
   "  --report     also write the results as JSON\n"
@@ -120,10 +143,22 @@ struct Command_line
   std::string reference;                     // "ideal": improve the source mesh itself
   std::size_t subdivide = 0;                 // levels of subdivision of the result (triangle maps)
   std::string scheme, subdivided_source;
+  std::string flat_output;                   // a triangle map's result as (u, v, 0), beside --output
+  std::string svg, energy_plot;              // pictures
+  std::string vertex_weights;                // a file of one weight per vertex
+  std::string cell_weighting = "average", order = "sorted", parallel_sweep = "sets", harmonic_start;
+  bool svg_both = false;                     // the source beside the map in --svg
   bool volume_mode() const { return !start.empty(); }
   bool ideal() const { return reference == "ideal"; }
   bool slides() const { return boundary == "slide" || (boundary.empty() && start == "ball"); }
 };
+
+// A tetrahedral mesh: Medit (.mesh) or TetGen (.ele and .node beside it).
+bool tetrahedral_file(const std::string& path)
+{
+  const std::string e = DO::IO::internal::extension(path);
+  return e == "mesh" || e == "ele" || e == "node";
+}
 
 template <class T>
 T parse_number(const std::string& option, const std::string& text)
@@ -181,11 +216,15 @@ void check_files(const Command_line& c)
   std::vector<std::pair<std::string, std::string>> inputs = {{"--source", c.source}}, outputs = {{"--output", c.output}};
   if(!c.target.empty()) inputs.emplace_back("--target", c.target);
   if(c.fix != "boundary" && c.fix != "none") inputs.emplace_back("--fix", c.fix);
+  if(!c.vertex_weights.empty()) inputs.emplace_back("--vertex-weights", c.vertex_weights);
   if(!c.carry.empty()) inputs.emplace_back("--carry", c.carry);
   if(!c.report.empty()) outputs.emplace_back("--report", c.report);
   if(!c.mesh_output.empty()) outputs.emplace_back("--mesh-output", c.mesh_output);
   if(!c.carry_output.empty()) outputs.emplace_back("--carry-output", c.carry_output);
   if(!c.subdivided_source.empty()) outputs.emplace_back("--subdivided-source", c.subdivided_source);
+  if(!c.flat_output.empty()) outputs.emplace_back("--flat-output", c.flat_output);
+  if(!c.svg.empty()) outputs.emplace_back("--svg", c.svg);
+  if(!c.energy_plot.empty()) outputs.emplace_back("--energy-plot", c.energy_plot);
   for(const auto& [option, path] : inputs) {
     struct stat s;
     if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
@@ -209,8 +248,9 @@ Command_line parse(int argc, char** argv)
   for(int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if(option == "--help" || option == "-h") throw Usage_error("");
-    if(option == "--untangle" || option == "--snap" || option == "--quiet" || option == "--verbose") {   // no value
-      bool& flag = option == "--untangle" ? c.untangle : option == "--snap" ? c.snap : option == "--quiet" ? c.quiet : c.verbose;
+    if(option == "--untangle" || option == "--snap" || option == "--quiet" || option == "--verbose" || option == "--svg-both") {
+      bool& flag = option == "--untangle" ? c.untangle : option == "--snap" ? c.snap : option == "--quiet" ? c.quiet
+                 : option == "--verbose" ? c.verbose : c.svg_both;   // options without a value
       if(flag) throw Usage_error(option + " is given twice");
       flag = true;
       continue;
@@ -231,6 +271,14 @@ Command_line parse(int argc, char** argv)
     else if(option == "--subdivide") c.subdivide = parse_number<std::size_t>(option, value);
     else if(option == "--scheme") c.scheme = value;
     else if(option == "--subdivided-source") c.subdivided_source = value;
+    else if(option == "--flat-output") c.flat_output = value;
+    else if(option == "--svg") c.svg = value;
+    else if(option == "--vertex-weights") c.vertex_weights = value;
+    else if(option == "--cell-weighting") c.cell_weighting = value;
+    else if(option == "--order") c.order = value;
+    else if(option == "--parallel-sweep") c.parallel_sweep = value;
+    else if(option == "--harmonic-start") c.harmonic_start = value;
+    else if(option == "--energy-plot") c.energy_plot = value;
     else if(option == "--carry") c.carry = value;
     else if(option == "--carry-output") c.carry_output = value;
     else if(option == "--center") c.center = parse_point(option, value);
@@ -258,8 +306,19 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
   if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
   if(c.quiet && c.verbose) throw Usage_error("--quiet and --verbose contradict each other");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> choices = {
+    {"--cell-weighting", {c.cell_weighting, "average", "volume", "uniform"}}, {"--order", {c.order, "sorted", "greedy"}},
+    {"--parallel-sweep", {c.parallel_sweep, "sets", "partition"}}};
+  for(const auto& [option, values] : choices)
+    if(std::find(values.begin() + 1, values.end(), values[0]) == values.end()) {
+      std::string allowed;
+      for(std::size_t i = 1; i < values.size(); ++i) allowed += (i == 1 ? "" : i + 1 == values.size() ? " or " : ", ") + values[i];
+      throw Usage_error(option + " is " + allowed + ", not '" + values[0] + "'");
+    }
+  if(!c.harmonic_start.empty() && c.harmonic_start != "on" && c.harmonic_start != "off")
+    throw Usage_error("--harmonic-start is on or off, not '" + c.harmonic_start + "'");
   const std::string in = DO::IO::internal::extension(c.source), out = DO::IO::internal::extension(c.output);
-  const bool tetrahedra = in == "mesh" || c.volume_mode();
+  const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   if(tetrahedra ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
     throw Usage_error(tetrahedra ? "--output must end in .mesh or .vtu for a tetrahedral map"
                                  : "--output must end in .off, .obj or .vtu");
@@ -269,7 +328,7 @@ Command_line parse(int argc, char** argv)
   if(!c.reference.empty() && !c.ideal()) throw Usage_error("--reference is ideal, not '" + c.reference + "'");
   if(c.ideal() && (!c.target.empty() || c.volume_mode()))
     throw Usage_error("--reference ideal improves the source itself: no --target or --start");
-  if(in == "mesh" && c.target.empty() && !c.volume_mode() && !c.ideal())
+  if(tetrahedral_file(c.source) && c.target.empty() && !c.volume_mode() && !c.ideal())
     throw Usage_error("a .mesh source needs --target (the start map) or --start");
   const std::vector<std::pair<std::string, bool>> volume_only = {
     {"--mesh-output", !c.mesh_output.empty()}, {"--cell-size", c.cell_size > 0}, {"--center", !c.center.empty()},
@@ -278,9 +337,9 @@ Command_line parse(int argc, char** argv)
     if(given && !c.volume_mode() && !(option == "--boundary" && c.ideal()))
       throw Usage_error(option + " needs --start (the volume mode)");
   if(c.ideal() && out == "vtu") throw Usage_error("--reference ideal writes the improved mesh: .off, .obj or .mesh");
-  if(c.ideal() && c.boundary == "slide" && in != "mesh")
+  if(c.ideal() && c.boundary == "slide" && !tetrahedral_file(c.source))
     throw Usage_error("--boundary slide with --reference ideal needs a tetrahedral mesh (.mesh)");
-  if(in == "mesh" && (c.cell_size > 0)) throw Usage_error("--cell-size is for a surface source (a .mesh source is already meshed)");
+  if(tetrahedral_file(c.source) && (c.cell_size > 0)) throw Usage_error("--cell-size is for a surface source (a .mesh source is already meshed)");
   if(!c.mesh_output.empty() && DO::IO::internal::extension(c.mesh_output) != "mesh")
     throw Usage_error("--mesh-output must end in .mesh");
   if(!c.boundary.empty() && c.boundary != "slide" && c.boundary != "fixed")
@@ -298,6 +357,17 @@ Command_line parse(int argc, char** argv)
   if(!c.subdivided_source.empty() && DO::IO::internal::extension(c.subdivided_source) != "off" &&
      DO::IO::internal::extension(c.subdivided_source) != "obj")
     throw Usage_error("--subdivided-source must end in .off or .obj");
+  if(!c.flat_output.empty() && (tetrahedra || c.ideal()))
+    throw Usage_error("--flat-output is for a triangle map (not tetrahedra, not --reference ideal)");
+  if(!c.flat_output.empty() && DO::IO::internal::extension(c.flat_output) != "off" &&
+     DO::IO::internal::extension(c.flat_output) != "obj")
+    throw Usage_error("--flat-output must end in .off or .obj");
+  for(const std::string* picture : {&c.svg, &c.energy_plot})
+    if(!picture->empty() && DO::IO::internal::extension(*picture) != "svg")
+      throw Usage_error("--svg and --energy-plot must end in .svg");
+  if(c.svg_both && c.svg.empty()) throw Usage_error("--svg-both needs --svg");
+  if(!c.svg.empty() && c.ideal())
+    throw Usage_error("--svg draws a map's distortion: not with --reference ideal (write a .vtu of the mesh instead)");
   if(c.carry.empty() != c.carry_output.empty()) throw Usage_error("--carry and --carry-output go together");
   if(!c.carry.empty() && !tetrahedra) throw Usage_error("--carry needs a tetrahedral map (--start, or a .mesh source)");
   if(c.snap && c.carry.empty()) throw Usage_error("--snap needs --carry");
@@ -305,8 +375,8 @@ Command_line parse(int argc, char** argv)
     const std::string e = DO::IO::internal::extension(*carried);
     if(!carried->empty() && e != "off" && e != "obj") throw Usage_error("--carry and --carry-output must end in .off or .obj");
   }
-  if(!c.target.empty() && (DO::IO::internal::extension(c.target) == "mesh") != (in == "mesh"))
-    throw Usage_error("--source and --target must both be triangle meshes or both .mesh files");
+  if(!c.target.empty() && tetrahedral_file(c.target) != tetrahedral_file(c.source))
+    throw Usage_error("--source and --target must both be triangle meshes or both tetrahedral meshes");
   try {
     DO::with_measure(c.measure, [](const auto&) { return 0; });
   } catch(const DO::Invalid_input& e) {

@@ -24,6 +24,7 @@
 #include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/IO/vertex_list.h>
+#include <CGAL/Distortion_optimization/IO/svg.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
@@ -81,6 +82,7 @@ using distortion_optimizer::Command_line;
 using distortion_optimizer::Usage_error;
 using distortion_optimizer::parse;
 using distortion_optimizer::usage;
+using distortion_optimizer::tetrahedral_file;
 
 // The source as a Surface_mesh, vertex i and face f in file order; rejects what a surface mesh
 // cannot represent (non-manifold edges or vertices, inconsistent orientation, unused vertices).
@@ -175,15 +177,23 @@ private:
   std::shared_ptr<State> state_;
 };
 
-// The options both kinds of mesh share.
-auto common_parameters(const Command_line& c)
+// The options both kinds of mesh share, with the vertex weights (a map of the mesh's vertices).
+template <class Weights>
+auto common_parameters(const Command_line& c, const Weights& weights)
 {
+  namespace P = DO::parameters;
   const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
   const auto schedule = c.schedule == "local" ? DO::Schedule::LOCAL
                       : c.schedule == "global" ? DO::Schedule::GLOBAL : DO::Schedule::ALTERNATING;
-  return DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)),
-    DO::parameters::schedule(schedule, DO::parameters::local_solver(solver, DO::parameters::untangle_first(c.untangle,
-      DO::parameters::convergence_threshold(c.threshold)))))
+  const auto weighting = c.cell_weighting == "volume" ? DO::Cell_weighting::VOLUME
+                       : c.cell_weighting == "uniform" ? DO::Cell_weighting::UNIFORM : DO::Cell_weighting::AVERAGE_VOLUME;
+  const auto order = c.order == "greedy" ? DO::Vertex_order::GREEDY : DO::Vertex_order::SORTED_PER_SWEEP;
+  const auto sweep = c.parallel_sweep == "partition" ? DO::Parallel_sweep::PARTITION : DO::Parallel_sweep::INDEPENDENT_SETS;
+  const bool harmonic = c.harmonic_start.empty() ? schedule != DO::Schedule::LOCAL : c.harmonic_start == "on";
+  return P::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)),
+    P::schedule(schedule, P::local_solver(solver, P::untangle_first(c.untangle, P::convergence_threshold(c.threshold,
+      P::cell_weighting(weighting, P::vertex_order(order, P::parallel_sweep(sweep, P::use_harmonic_start(harmonic,
+        P::vertex_weight_map(weights))))))))))
     .number_of_iterations(c.iterations).visitor(Progress(c));
 }
 
@@ -227,6 +237,24 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
   for(const auto& [name, value] : fields) std::printf("%-21s %s\n", name.c_str(), value.c_str());
 }
 
+// --svg (the map's cells coloured by distortion, beside the source's with --svg-both) and
+// --energy-plot (the start's energy, then each iteration's).
+void write_pictures(const Command_line& c, DO::IO::Svg_panel source, DO::IO::Svg_panel map, const std::string& measure_name,
+                    const DO::Result& r)
+{
+  if(!c.svg.empty()) {
+    std::vector<DO::IO::Svg_panel> panels;
+    if(c.svg_both) panels.push_back(std::move(source));
+    panels.push_back(std::move(map));
+    DO::IO::write_SVG(c.svg, panels, measure_name);
+  }
+  if(!c.energy_plot.empty()) {
+    std::vector<double> energies = {r.initial_energy};
+    energies.insert(energies.end(), r.energy_per_iteration.begin(), r.energy_per_iteration.end());
+    DO::IO::write_energy_plot_SVG(c.energy_plot, energies, measure_name + " energy per iteration");
+  }
+}
+
 // --reference ideal: the report's quality fields (angles are dihedral angles for tetrahedra).
 std::vector<std::pair<std::string, std::string>> quality_fields(const DO::Mesh_quality& before, const DO::Mesh_quality& after)
 {
@@ -250,9 +278,15 @@ int run_triangles(const Command_line& c)
     if(!planar) throw DO::Invalid_input(c.source + ": --reference ideal needs a planar mesh (z = 0) or a .mesh");
     for(Vertex v : mesh.vertices()) uv[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
   } else if(!c.target.empty()) {
+    // The target's positions (z = 0), or its UVs: an OBJ whose faces refer to texture coordinates.
     const DO::IO::Triangle_soup target = DO::IO::read_triangle_soup(c.target);
     check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "face");
+    const std::vector<std::array<double, 2>> texture = DO::IO::per_vertex_texture_coordinates(target, c.target);
     for(std::size_t i = 0; i < target.points.size(); ++i) {
+      if(!texture.empty()) {
+        uv[Vertex(i)] = K::Point_2(texture[i][0], texture[i][1]);
+        continue;
+      }
       if(target.points[i][2] != 0)
         throw DO::Invalid_input(c.target + ": vertex " + std::to_string(i) + " has z != 0 (the target must be planar)");
       uv[Vertex(i)] = K::Point_2(target.points[i][0], target.points[i][1]);
@@ -281,6 +315,12 @@ int run_triangles(const Command_line& c)
     for(Vertex v : mesh.vertices()) fixed[v] = list[std::size_t(v)] != 0;
   }
 
+  auto weights = mesh.add_property_map<Vertex, double>("v:weight", 1.).first;
+  if(!c.vertex_weights.empty()) {
+    const std::vector<double> w = DO::IO::read_vertex_weights(c.vertex_weights, mesh.number_of_vertices());
+    for(Vertex v : mesh.vertices()) weights[v] = w[std::size_t(v)];
+  }
+
   auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
   for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
 
@@ -290,7 +330,7 @@ int run_triangles(const Command_line& c)
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
     return with_boundary_guard(c, [&](bool guard) {
-      auto np = DO::parameters::preserve_global_injectivity(guard, common_parameters(c)).vertex_is_constrained_map(fixed);
+      auto np = DO::parameters::preserve_global_injectivity(guard, common_parameters(c, weights)).vertex_is_constrained_map(fixed);
       if(c.ideal()) return DO::improve_mesh_quality(mesh, uv, measure, np);
       // A planar source is compared in its own plane (so its orientation counts), a surface in
       // each triangle's frame.
@@ -309,6 +349,12 @@ int run_triangles(const Command_line& c)
                         DO::parameters::cell_distortion_map(per_face, CGAL::parameters::vertex_point_map(source_2)))
                     : CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
     });
+  };
+  const auto face_values = [&] {
+    distortion();
+    std::vector<double> values;
+    for(auto f : mesh.faces()) values.push_back(per_face[f]);
+    return values;
   };
   DO::IO::Triangle_soup output;
   output.cells = source.cells;
@@ -334,13 +380,31 @@ int run_triangles(const Command_line& c)
                                  {"subdivided_energy", json_number(distortion().mean_volume)}});
   }
   for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
-  if(DO::IO::internal::extension(c.output) == "vtu") {
-    distortion();
-    std::vector<double> values;
-    for(auto f : mesh.faces()) values.push_back(per_face[f]);
-    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}});
+  if(!c.flat_output.empty()) DO::IO::write_triangle_soup(c.flat_output, output);
+  if(!planar && DO::IO::internal::extension(c.output) == "obj") {
+    // A parametrization as texture tools read it: the surface, with one UV per vertex.
+    DO::IO::Triangle_soup textured;
+    for(Vertex v : mesh.vertices()) {
+      textured.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+      textured.texture_coordinates.push_back({uv[v].x(), uv[v].y()});
+    }
+    textured.cells = textured.cell_texture_indices = output.cells;
+    DO::IO::write_triangle_soup(c.output, textured);
+  } else if(DO::IO::internal::extension(c.output) == "vtu") {
+    std::vector<std::array<double, 3>> displacement;
+    for(Vertex v : mesh.vertices())
+      displacement.push_back({uv[v].x() - mesh.point(v).x(), uv[v].y() - mesh.point(v).y(), -mesh.point(v).z()});
+    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, face_values()}}, {{"displacement", displacement}});
   } else {
     DO::IO::write_triangle_soup(c.output, output);
+  }
+  if(!c.svg.empty()) {
+    std::vector<std::array<double, 3>> points;
+    for(Vertex v : mesh.vertices()) points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+    write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, face_values()),
+                   DO::IO::triangle_panel("map", output.points, output.cells, face_values()), measure_name, r);
+  } else {
+    write_pictures(c, {}, {}, measure_name, r);
   }
   report(c, cells, vertices, measure_name, r, fields);
   return 0;
@@ -373,7 +437,7 @@ DO::IO::Tetrahedron_soup soup_of(const Complex& complex)
 // The source tetrahedra: read from a .mesh, or the inside of a closed surface meshed by Mesh_3.
 DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh_seconds)
 {
-  if(DO::IO::internal::extension(c.source) == "mesh") return DO::IO::read_tetrahedron_soup(c.source);
+  if(tetrahedral_file(c.source)) return DO::IO::read_tetrahedron_soup(c.source);
   const auto begin = std::chrono::steady_clock::now();
   const Mesh surface = to_mesh(DO::IO::read_triangle_soup(c.source), c.source);
   DO::IO::Tetrahedron_soup soup;
@@ -462,6 +526,9 @@ int run_tetrahedra(const Command_line& c)
   auto fixed = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) {
     return listed.empty() ? false : listed[index.at(v)] != 0;
   });
+  const std::vector<double> weight_values = c.vertex_weights.empty() ? std::vector<double>(source.points.size(), 1.)
+                                                                     : DO::IO::read_vertex_weights(c.vertex_weights, source.points.size());
+  auto weights = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) { return weight_values[index.at(v)]; });
 
   std::string measure_name;
   const DO::Mesh_quality before = c.ideal() ? DO::mesh_quality(c3t3, target_map) : DO::Mesh_quality();
@@ -471,28 +538,28 @@ int run_tetrahedra(const Command_line& c)
       if(!c.slides())
         return with_boundary_guard(c, [&](bool guard) {
           return c.fix == "boundary"
-            ? DO::improve_mesh_quality(c3t3, target_map, measure, common_parameters(run))
+            ? DO::improve_mesh_quality(c3t3, target_map, measure, common_parameters(run, weights))
             : DO::improve_mesh_quality(c3t3, target_map, measure,
-                DO::parameters::preserve_global_injectivity(guard, common_parameters(run)).vertex_is_constrained_map(fixed));
+                DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
         });
       // Sliding on the mesh's own boundary, the vertices on its sharp edges fixed.
       const auto sharp = DO::sharp_boundary_vertices(c3t3, target_map);
       auto kept = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) { return sharp.count(v) > 0 || get(fixed, v); });
       return DO::improve_mesh_quality(c3t3, target_map, measure,
         DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map),
-                                         common_parameters(run).vertex_is_constrained_map(kept)));
+                                         common_parameters(run, weights).vertex_is_constrained_map(kept)));
     }
     if(c.volume_mode() && c.slides()) {
-      const auto np = common_parameters(run).vertex_is_constrained_map(fixed);
+      const auto np = common_parameters(run, weights).vertex_is_constrained_map(fixed);
       return c.start == "ball"
         ? CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Sphere_surface(), np))
         : CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map), np));
     }
     return with_boundary_guard(c, [&](bool guard) {
       return c.fix == "boundary"
-        ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(run))
+        ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(run, weights))
         : CGAL::minimize_distortion(c3t3, target_map, measure,
-            DO::parameters::preserve_global_injectivity(guard, common_parameters(run)).vertex_is_constrained_map(fixed));
+            DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
     });
   });
   DO::IO::Tetrahedron_soup output = source;
@@ -503,24 +570,35 @@ int run_tetrahedra(const Command_line& c)
     } else {
       output.points[i] = target.points[i];
     }
-  if(DO::IO::internal::extension(c.output) == "vtu") {
+  std::vector<double> values;   // each source cell's distortion, for pictures
+  if(DO::IO::internal::extension(c.output) == "vtu" || !c.svg.empty()) {
     std::unordered_map<Tr::Cell_handle, double> per_cell;
     DO::with_measure(c.measure, [&](const auto& measure) {
       return CGAL::compute_distortion(c3t3, target_map, measure,
                                       DO::parameters::cell_distortion_map(boost::associative_property_map<decltype(per_cell)>(per_cell)));
     });
-    std::vector<double> values;
     for(const auto& t : source.cells) {
       Tr::Cell_handle cell;
       int i0, i1, i2, i3;
       c3t3.triangulation().is_cell(handles[t[0]], handles[t[1]], handles[t[2]], handles[t[3]], cell, i0, i1, i2, i3);
       values.push_back(per_cell.at(cell));
     }
-    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}});
-  } else {
-    DO::IO::write_MEDIT(c.output, output);
   }
-  if(!c.mesh_output.empty()) DO::IO::write_MEDIT(c.mesh_output, source);
+  if(DO::IO::internal::extension(c.output) == "vtu") {
+    std::vector<std::array<double, 3>> displacement;
+    for(std::size_t i = 0; i < output.points.size(); ++i)
+      displacement.push_back({output.points[i][0] - source.points[i][0], output.points[i][1] - source.points[i][1],
+                              output.points[i][2] - source.points[i][2]});
+    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}}, {{"displacement", displacement}});
+  } else {
+    DO::IO::write_MEDIT_soup(c.output, output);
+  }
+  if(!c.mesh_output.empty()) DO::IO::write_MEDIT_soup(c.mesh_output, source);
+  if(!c.svg.empty())
+    write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, values),
+                   DO::IO::cross_section_panel("map, section z = middle", output.points, output.cells, values), measure_name, r);
+  else
+    write_pictures(c, {}, {}, measure_name, r);
   std::vector<std::pair<std::string, std::string>> fields;
   if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(c3t3, target_map));
   if(c.volume_mode() || carried) {
@@ -555,7 +633,8 @@ int run(const Command_line& c)
   };
   // The report last: it is renamed only once the map's files are.
   const std::vector<std::string Command_line::*> outputs = {&Command_line::output, &Command_line::mesh_output,
-    &Command_line::carry_output, &Command_line::subdivided_source, &Command_line::report};
+    &Command_line::carry_output, &Command_line::subdivided_source, &Command_line::flat_output, &Command_line::svg, &Command_line::energy_plot,
+    &Command_line::report};
   std::vector<std::unique_ptr<DO::IO::Temporary_file>> files(outputs.size());
   Command_line staged = c;
   for(std::size_t i = 0; i < outputs.size(); ++i)
@@ -563,7 +642,7 @@ int run(const Command_line& c)
       files[i] = std::make_unique<DO::IO::Temporary_file>(c.*outputs[i], suffix(c.*outputs[i]));
       staged.*outputs[i] = files[i]->path();
     }
-  const bool tetrahedra = DO::IO::internal::extension(c.source) == "mesh" || c.volume_mode();
+  const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   const int status = tetrahedra ? run_tetrahedra(staged) : run_triangles(staged);
   for(std::size_t i = 0; i < outputs.size(); ++i)
     if(files[i]) files[i]->rename_to(c.*outputs[i]);

@@ -67,21 +67,52 @@ normalized measure). Only this function accepts `Point_3` targets for a triangle
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam TargetMap a model of `ReadablePropertyMap` from vertex descriptors to a `Point_2` or a `Point_3`
-\tparam Measure a model of `DistortionMeasure` (see `measures.h`), e.g.
-        `Distortion_optimization::Conformal_dilatation`
-\tparam NamedParameters a sequence of named parameters
+\tparam Measure a model of `DistortionMeasure`, e.g. `Distortion_optimization::Conformal_dilatation`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
 
 \param tm the source mesh; it is not modified
 \param target the image of each vertex
 \param measure the distortion measure
-\param np optional named parameters among:
-  - `CGAL::parameters::vertex_point_map`: source positions, `Point_2` (planar map) or `Point_3`
-    (surface to plane); default `get(CGAL::vertex_point, tm)`
-  - `Distortion_optimization::parameters::vertex_weight_map`: omega(v) > 0; default 1
-  - `Distortion_optimization::parameters::cell_distortion_map`: a writable face property map
-    to `double` that receives each face's distortion; default none
-  - `CGAL::parameters::geom_traits`: the kernel whose orientation predicates count inverted faces
-    (and orient planar source faces); default the kernel of the vertex point map's points
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating the source positions to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `%Point_2` (planar map) or `%Point_3` (surface to plane) as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+                    must be available in `TriangleMesh`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of `tm`
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_distortion_map}
+    \cgalParamDescription{a property map that receives the distortion D(J_c) of each face of `tm`
+                          (`Distortion_optimization::parameters::cell_distortion_map()`)}
+    \cgalParamType{a class model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+                   as key type and `double` as value type}
+    \cgalParamDefault{unused: no per-face value is written}
+    \cgalParamExtra{Written only when the function returns normally.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type of the vertex point map, using `CGAL::Kernel_traits`}
+    \cgalParamExtra{Its `Orientation_2` decides, on `double` coordinates, the orientation of planar source faces and
+                    which target faces are inverted; its `Collinear_3` whether a surface source face is degenerate.
+                    Its points must be constructible from `double` coordinates.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the weighted means, energies, extreme values and the number of inverted faces (counted
 with exact orientation predicates: a face is inverted when its image's orientation differs from
@@ -89,7 +120,8 @@ the source's; surface faces count as positively oriented in their own frames; al
 `Point_3` targets).
 
 \throws Distortion_optimization::Invalid_input for an empty mesh, a face that is not a triangle,
-non-finite coordinates or weights, a degenerate source face, or a non-finite Jacobian.
+non-finite coordinates or weights, a non-positive weight, a degenerate source face, or a
+non-finite Jacobian.
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
@@ -111,9 +143,55 @@ compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measur
 \ingroup PkgDistortionOptimizationRef
 
 Measures the distortion of the simplicial map that sends each vertex `v` of the cells of the
-complex `c3t3` (only the cells in the complex) to `get(target, v)`; as the triangle-mesh overload,
-with `n = 3`, property maps keyed by `Vertex_handle` (weights) and `Cell_handle`
-(`cell_distortion_map`).
+complex `c3t3` (only the cells in the complex) from its position in the triangulation to
+`get(target, v)`; as the triangle-mesh overload, with `n = 3`.
+
+\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam TargetMap a model of `ReadablePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`
+\tparam Measure a model of `DistortionMeasure`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param c3t3 the source complex; it is not modified
+\param target the image of each vertex of the cells of the complex
+\param measure the distortion measure
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below; `vertex_point_map` is not used (positions come from the triangulation)
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of the cells of `c3t3`
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_distortion_map}
+    \cgalParamDescription{a property map that receives the distortion D(J_c) of each cell of the complex
+                          (`Distortion_optimization::parameters::cell_distortion_map()`)}
+    \cgalParamType{a class model of `WritablePropertyMap` with `C3T3::Triangulation::Cell_handle`
+                   as key type and `double` as value type}
+    \cgalParamDefault{unused: no per-cell value is written}
+    \cgalParamExtra{Written only when the function returns normally.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
+                      triangulation's points}
+    \cgalParamExtra{Its `Orientation_3` decides, on `double` coordinates, whether each source tetrahedron is positive
+                    and which target tetrahedra are inverted. Its `Point_3` must be constructible from three `double`s.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the weighted means, energies, extreme values and the number of inverted cells (exact
+orientation predicates).
+
+\throws Distortion_optimization::Invalid_input for a complex with no cell, a source tetrahedron that
+is not positively oriented, non-finite target coordinates or weights, a non-positive weight, or a
+non-finite Jacobian.
 */
 template <class C3T3, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>

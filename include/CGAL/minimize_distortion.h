@@ -33,57 +33,173 @@ flattened (checked with exact predicates); the energy never increases.
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam TargetMap a model of `ReadWritePropertyMap` from vertex descriptors to a `Point_2`
 \tparam Measure a model of `DistortionMeasure`, e.g. `Distortion_optimization::Symmetric_dirichlet`
-\tparam NamedParameters a sequence of named parameters
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
 
 \param tm the source mesh (not modified)
 \param target the start map on input, the optimized map on output; written only on success, and
        only for free vertices
 \param measure the distortion measure D
-\param np optional named parameters among:
-  - `CGAL::parameters::vertex_point_map`: source positions, `Point_2` or `Point_3`; default
-    `get(CGAL::vertex_point, tm)`
-  - `CGAL::parameters::vertex_is_constrained_map`: a readable vertex property map to `bool`;
-    constrained vertices keep their target. Default: the border vertices.
-  - `Distortion_optimization::parameters::vertex_weight_map`: omega(v) > 0; default 1
-  - `Distortion_optimization::parameters::cell_weighting`: a `Distortion_optimization::Cell_weighting`;
-    default `AVERAGE_VOLUME`
-  - `CGAL::parameters::number_of_iterations`: the largest number of iterations; default 100
-  - `Distortion_optimization::parameters::convergence_threshold`: stop when an iteration decreases
-    the energy by less than this fraction of the energy above the measure's minimum (normalized
-    measures) or of the energy; default 1e-4
-  - `Distortion_optimization::parameters::local_solver`: `GRADIENT_DESCENT` (default) or `BFGS`
-  - `Distortion_optimization::parameters::vertex_order`: `SORTED_PER_SWEEP` (default) or `GREEDY`
-    (the paper's live priority queue); with more than one thread the parallel sweeps always use
-    the sorted order, and `GREEDY` applies to the one-thread sweep only
-  - `CGAL::parameters::geom_traits`: a model of `Kernel` whose orientation predicates decide, on
-    the coordinates the optimizer uses, the orientation of each source triangle (planar source)
-    and whether a target triangle is inverted; default the kernel of the vertex point map's points.
-    With a kernel with exact predicates (the default `Epick`, or `Epeck`) the guarantee below is exact.
-  - `Distortion_optimization::parameters::schedule`: what an iteration does: `LOCAL` (the paper's
-    sweep), `GLOBAL` (one preconditioned step of all free vertices) or `ALTERNATING` (default: both)
-  - `Distortion_optimization::parameters::use_harmonic_start`: start from the harmonic map of the
-    fixed vertices, or from the best safe point towards it; default `true` except with `LOCAL`
-  - `Distortion_optimization::parameters::preserve_global_injectivity`: `true` to keep the map
-    globally injective when boundary vertices are free (a move that would make the target
-    boundary cross itself is shortened; exact predicates); the start map's boundary must not
-    cross itself. Default `false`.
-  - `Distortion_optimization::parameters::number_of_threads`: threads for the sweeps and global
-    steps when the program links `CGAL::TBB_support`; 0 for all; default 1. The output is
-    deterministic for a given number of threads.
-  - `Distortion_optimization::parameters::parallel_sweep`: `INDEPENDENT_SETS` (default) or
-    `PARTITION` (the paper's Algorithm 3), for more than one thread
-  - `Distortion_optimization::parameters::sliding_boundary`: a model of `SlidingSurface`
-    (`Distortion_optimization::Sphere_surface`, `Distortion_optimization::Triangle_surface` for
-    tetrahedral maps) on which the boundary vertices that are not constrained slide; then no
-    vertex is constrained by default. See sliding_surfaces.h.
-  - `CGAL::parameters::visitor`: a callable `bool(std::size_t iteration, double energy)` called
-    after each iteration; returning `false` stops the run with the map of that iteration
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating the source positions to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `%Point_2` (planar map) or `%Point_3` (surface parametrization) as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+                    must be available in `TriangleMesh`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of `tm`:
+                          a constrained vertex keeps its target}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{the border vertices of `tm` are constrained; with `sliding_boundary`, no vertex is}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of `tm`
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_weighting}
+    \cgalParamDescription{the cell weights w(c, v) of the energy (eq. 23)
+                          (`Distortion_optimization::parameters::cell_weighting()`)}
+    \cgalParamType{`Distortion_optimization::Cell_weighting`}
+    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of iterations}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`100`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{convergence_threshold}
+    \cgalParamDescription{the run stops when an iteration decreases the energy by less than this fraction
+                          of the energy above the measure's minimum (normalized measures) or of the energy
+                          (other measures) (`Distortion_optimization::parameters::convergence_threshold()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`1e-4`}
+    \cgalParamExtra{It must be non-negative.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{local_solver}
+    \cgalParamDescription{how one vertex's local problem is solved (`Distortion_optimization::parameters::local_solver()`)}
+    \cgalParamType{`Distortion_optimization::Local_solver`: `GRADIENT_DESCENT` or `BFGS`}
+    \cgalParamDefault{`Distortion_optimization::Local_solver::GRADIENT_DESCENT`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_order}
+    \cgalParamDescription{the order in which a sweep visits the free vertices
+                          (`Distortion_optimization::parameters::vertex_order()`)}
+    \cgalParamType{`Distortion_optimization::Vertex_order`: `SORTED_PER_SWEEP` or `GREEDY` (the paper's live priority queue)}
+    \cgalParamDefault{`Distortion_optimization::Vertex_order::SORTED_PER_SWEEP`}
+    \cgalParamExtra{With more than one thread the parallel sweeps always use the sorted order:
+                    `GREEDY` applies to the one-thread sweep only.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{schedule}
+    \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
+                          step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
+    \cgalParamType{`Distortion_optimization::Schedule`}
+    \cgalParamDefault{`Distortion_optimization::Schedule::ALTERNATING`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{use_harmonic_start}
+    \cgalParamDescription{if `true`, the run starts from the harmonic map of the fixed vertices when it is valid
+                          and better, or from the best safe point towards it
+                          (`Distortion_optimization::parameters::use_harmonic_start()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`, except with `Distortion_optimization::Schedule::LOCAL`: then `false`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{untangle_first}
+    \cgalParamDescription{if `true`, a start map with inverted or flat triangles is first untangled as by
+                          `Distortion_optimization::untangle()`, then the measure is minimized from the untangled map
+                          (`Distortion_optimization::parameters::untangle_first()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`: under a normalized measure such a start is an error}
+    \cgalParamExtra{The untangling runs at most 1000 rounds and does not call the visitor; `number_of_iterations`
+                    and `visitor` apply to the minimization only. The result reports it in
+                    `inverted_start_cells`, `untangle_iterations` and `untangle_seconds`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{preserve_global_injectivity}
+    \cgalParamDescription{if `true`, the map is kept globally injective when boundary vertices are free:
+                          a move that would make the target boundary cross itself is shortened (exact predicates)
+                          (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+    \cgalParamExtra{The boundary of the start map must not cross itself, otherwise
+                    `Distortion_optimization::Crossing_start_boundary` is thrown (only when some free vertex
+                    is on the boundary).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads of the sweeps and global steps; `0` for all the hardware offers
+                          (`Distortion_optimization::parameters::number_of_threads()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
+                    The output is deterministic for a given number of threads. A negative value is an error.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{parallel_sweep}
+    \cgalParamDescription{how local sweeps are shared among threads, with more than one thread
+                          (`Distortion_optimization::parameters::parallel_sweep()`)}
+    \cgalParamType{`Distortion_optimization::Parallel_sweep`: `INDEPENDENT_SETS` or `PARTITION` (the paper's Algorithm 3)}
+    \cgalParamDefault{`Distortion_optimization::Parallel_sweep::INDEPENDENT_SETS`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sliding_boundary}
+    \cgalParamDescription{a surface on which the border vertices that are not constrained slide
+                          (`Distortion_optimization::parameters::sliding_boundary()`)}
+    \cgalParamType{a model of `SlidingSurface` in the plane (its `project()` is called with `std::array<double, 2>`),
+                   e.g. `Distortion_optimization::Sphere_surface` (a circle)}
+    \cgalParamDefault{unused: the border vertices are constrained, or, when `vertex_is_constrained_map`
+                      frees them, move freely}
+    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type of the vertex point map, using `CGAL::Kernel_traits`}
+    \cgalParamExtra{Its `Orientation_2` decides, on the coordinates the optimizer uses (`double`), the orientation of
+                    each planar source triangle and whether a target triangle is inverted; its `Collinear_3` whether a
+                    surface source triangle is degenerate. Its points must be constructible from `double` coordinates.
+                    With a kernel with exact predicates (e.g. `Exact_predicates_inexact_constructions_kernel` or
+                    `Exact_predicates_exact_constructions_kernel`) the guarantee above is exact.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{a callable called after each iteration (numbered from 1) with the mean energy of the map
+                          of that iteration; returning `false` stops the run with that map}
+    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` (the result may be any
+                   type convertible to `bool`)}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{The visitor is copied.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns a `Distortion_optimization::Result`
 
-\throws Distortion_optimization::Invalid_input for the input `compute_distortion()` rejects,
-non-positive vertex weights, and, when the measure is infinite on inverted cells (normalized), a
-start map with an inverted or flat triangle (the message names it).
+\throws Distortion_optimization::Invalid_input, leaving `target` unchanged, for the input
+`compute_distortion()` rejects, non-positive or non-finite vertex weights, a negative or NaN
+convergence threshold, a negative number of threads, a start map on which the measure is not a
+number, and, when the measure is infinite on inverted cells (normalized), a start map with an
+inverted or flat triangle (the message names it) unless `untangle_first` is set; with
+`untangle_first`, when the untangling fails.
+\throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
+`preserve_global_injectivity` when the boundary of the start map crosses itself.
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
@@ -104,21 +220,168 @@ cells in the complex count; the triangulation's other cells are ignored, and onl
 complex cells are read or written.
 
 Same method, guarantees and result as the triangle-mesh overload (`n = 3`): no tetrahedron that is
-positive in the start map is ever inverted or flattened (exact predicates).
+positive in the start map is ever inverted or flattened (exact predicates). The source positions
+are the points of the triangulation.
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
-\param c3t3 the source complex (not modified)
-\param target the start map on input, the optimized map on output (free complex vertices only)
-\param measure the distortion measure D
 \tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a
         `Point_3`, e.g. `boost::associative_property_map<std::unordered_map<Vertex_handle, Point_3>>`
-\param np the named parameters of the triangle-mesh overload, with vertex maps keyed by
-        `Vertex_handle`; `vertex_point_map` is not used (positions come from the triangulation).
-        Default constraint: every vertex on the complex boundary (on a facet between a complex
-        cell and a cell outside the complex) is fixed, or, with `sliding_boundary`, slides on
-        the given surface. `CGAL::parameters::geom_traits` defaults to
-        the kernel of the triangulation's points; its `Orientation_3` decides source and target
-        orientations.
+\tparam Measure a model of `DistortionMeasure`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param c3t3 the source complex (not modified)
+\param target the start map on input, the optimized map on output; written only on success, and
+       only for free complex vertices
+\param measure the distortion measure D
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below; `vertex_point_map` is not used (positions come from the triangulation)
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of the cells
+                          of `c3t3`: a constrained vertex keeps its target}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{the vertices on the boundary of the complex (on a facet between a cell of the complex and a
+                      cell outside it) are constrained; with `sliding_boundary`, no vertex is}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of the cells of `c3t3`
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_weighting}
+    \cgalParamDescription{the cell weights w(c, v) of the energy (eq. 23)
+                          (`Distortion_optimization::parameters::cell_weighting()`)}
+    \cgalParamType{`Distortion_optimization::Cell_weighting`}
+    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of iterations}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`100`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{convergence_threshold}
+    \cgalParamDescription{the run stops when an iteration decreases the energy by less than this fraction
+                          of the energy above the measure's minimum (normalized measures) or of the energy
+                          (other measures) (`Distortion_optimization::parameters::convergence_threshold()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`1e-4`}
+    \cgalParamExtra{It must be non-negative.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{local_solver}
+    \cgalParamDescription{how one vertex's local problem is solved (`Distortion_optimization::parameters::local_solver()`)}
+    \cgalParamType{`Distortion_optimization::Local_solver`: `GRADIENT_DESCENT` or `BFGS`}
+    \cgalParamDefault{`Distortion_optimization::Local_solver::GRADIENT_DESCENT`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_order}
+    \cgalParamDescription{the order in which a sweep visits the free vertices
+                          (`Distortion_optimization::parameters::vertex_order()`)}
+    \cgalParamType{`Distortion_optimization::Vertex_order`: `SORTED_PER_SWEEP` or `GREEDY` (the paper's live priority queue)}
+    \cgalParamDefault{`Distortion_optimization::Vertex_order::SORTED_PER_SWEEP`}
+    \cgalParamExtra{With more than one thread the parallel sweeps always use the sorted order:
+                    `GREEDY` applies to the one-thread sweep only.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{schedule}
+    \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
+                          step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
+    \cgalParamType{`Distortion_optimization::Schedule`}
+    \cgalParamDefault{`Distortion_optimization::Schedule::ALTERNATING`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{use_harmonic_start}
+    \cgalParamDescription{if `true`, the run starts from the harmonic map of the fixed vertices when it is valid
+                          and better, or from the best safe point towards it
+                          (`Distortion_optimization::parameters::use_harmonic_start()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`, except with `Distortion_optimization::Schedule::LOCAL`: then `false`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{untangle_first}
+    \cgalParamDescription{if `true`, a start map with inverted or flat tetrahedra is first untangled as by
+                          `Distortion_optimization::untangle()`, then the measure is minimized from the untangled map
+                          (`Distortion_optimization::parameters::untangle_first()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`: under a normalized measure such a start is an error}
+    \cgalParamExtra{The untangling runs at most 1000 rounds and does not call the visitor; `number_of_iterations`
+                    and `visitor` apply to the minimization only. The result reports it in
+                    `inverted_start_cells`, `untangle_iterations` and `untangle_seconds`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{preserve_global_injectivity}
+    \cgalParamDescription{if `true`, the map is kept globally injective when boundary vertices are free:
+                          a move that would make the target boundary surface cross itself is shortened (exact predicates)
+                          (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+    \cgalParamExtra{The boundary of the start map must not cross itself, otherwise
+                    `Distortion_optimization::Crossing_start_boundary` is thrown (only when some free vertex
+                    is on the boundary).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads of the sweeps and global steps; `0` for all the hardware offers
+                          (`Distortion_optimization::parameters::number_of_threads()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
+                    The output is deterministic for a given number of threads. A negative value is an error.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{parallel_sweep}
+    \cgalParamDescription{how local sweeps are shared among threads, with more than one thread
+                          (`Distortion_optimization::parameters::parallel_sweep()`)}
+    \cgalParamType{`Distortion_optimization::Parallel_sweep`: `INDEPENDENT_SETS` or `PARTITION` (the paper's Algorithm 3)}
+    \cgalParamDefault{`Distortion_optimization::Parallel_sweep::INDEPENDENT_SETS`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sliding_boundary}
+    \cgalParamDescription{a surface on which the boundary vertices of the complex that are not constrained slide
+                          (`Distortion_optimization::parameters::sliding_boundary()`)}
+    \cgalParamType{a model of `SlidingSurface` in space (its `project()` is called with `std::array<double, 3>`),
+                   e.g. `Distortion_optimization::Sphere_surface` or `Distortion_optimization::Triangle_surface`}
+    \cgalParamDefault{unused: the boundary vertices are constrained, or, when `vertex_is_constrained_map`
+                      frees them, move freely}
+    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
+                      triangulation's points}
+    \cgalParamExtra{Its `Orientation_3` decides, on the coordinates the optimizer uses (`double`), whether each source
+                    tetrahedron is positive and whether a target tetrahedron is inverted. Its `Point_3` must be
+                    constructible from three `double`s.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{a callable called after each iteration (numbered from 1) with the mean energy of the map
+                          of that iteration; returning `false` stops the run with that map}
+    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` (the result may be any
+                   type convertible to `bool`)}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{The visitor is copied.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a `Distortion_optimization::Result`
+
+\throws Distortion_optimization::Invalid_input, leaving `target` unchanged, as the triangle-mesh
+overload, and for a complex with no cell or with a source tetrahedron that is not positively
+oriented.
+\throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
+`preserve_global_injectivity` when the boundary of the start map crosses itself.
 */
 template <class C3T3, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>

@@ -1,5 +1,6 @@
 // The command-line tool, run as a user would: its documented options, outputs and errors.
 
+#include "kuhn_block.h"
 #include "test_files.h"
 
 #include <CGAL/Distortion_optimization/IO/medit.h>
@@ -293,6 +294,229 @@ TEST(CommandLine, ProgressLinesAndTimeLimit)
   EXPECT_EQ(json_value(json, "inverted_cells"), 0) << json;
   EXPECT_LT(json_value(json, "final_energy"), json_value(json, "initial_energy")) << json;
   EXPECT_EQ(IO::read_triangle_soup(o).cells, IO::read_triangle_soup(data("lion-head.off")).cells);
+}
+
+// A surface's map is a parametrization: --output X.obj has the surface with one UV per vertex,
+// --flat-output the same map as (u, v, 0), and an OBJ with UVs is read back as a start.
+TEST(CommandLine, ASurfaceMapIsWrittenAsUVsAndReadBack)
+{
+  const std::string s = data("nefertiti.off"), o = temp("nefertiti_uv.obj"), f = temp("nefertiti_flat.off"),
+                    r = temp("nefertiti_uv.json"), o2 = temp("nefertiti_uv2.obj"), r2 = temp("nefertiti_uv2.json");
+  Tool_run result = run("--source " + s + " --output " + o + " --flat-output " + f + " --measure conformal --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Triangle_soup in = IO::read_triangle_soup(s), out = IO::read_triangle_soup(o), flat = IO::read_triangle_soup(f);
+  EXPECT_EQ(out.points, in.points);   // the surface itself, to the bit
+  EXPECT_EQ(out.cells, in.cells);
+  EXPECT_EQ(out.cell_texture_indices, in.cells);
+  const std::vector<std::array<double, 2>> uv = IO::per_vertex_texture_coordinates(out, o);
+  ASSERT_EQ(uv.size(), in.points.size());
+  EXPECT_EQ(flat.cells, in.cells);
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    const std::array<double, 3> expected = {uv[v][0], uv[v][1], 0.};
+    EXPECT_EQ(flat.points[v], expected) << v;
+  }
+  EXPECT_NE(slurp(o).find("\nvt "), std::string::npos);
+
+  // The UVs as the start of another run: its start energy is the first run's final one.
+  result = run("--source " + s + " --target " + o + " --output " + o2 + " --measure conformal --report " + r2);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const double final_energy = json_value(slurp(r), "final_energy");
+  EXPECT_NEAR(json_value(slurp(r2), "initial_energy"), final_energy, 1e-12 * final_energy);
+
+  // One vertex with two UVs (a seam), and faces of which only some have UVs: clear errors.
+  const std::string seam = temp("seam.obj"), mixed = temp("mixed.obj"), square = temp("square.off");
+  std::ofstream(square) << "OFF\n4 2 0\n0 0 1\n1 0 0\n1 1 1\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  std::ofstream(seam) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
+                         "f 1/1 2/2 3/3\nf 1/5 3/3 4/4\n";
+  std::ofstream(mixed) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nf 1/1 2/2 3/3\nf 1 3 4\n";
+  result = run("--source " + square + " --target " + seam + " --output " + o2);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("vertex 0 has two texture coordinates"), std::string::npos) << result.output;
+  result = run("--source " + square + " --target " + mixed + " --output " + o2);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("texture indices and others not"), std::string::npos) << result.output;
+  EXPECT_EQ(run("--source " + temp("none.mesh") + " --target " + temp("none2.mesh") + " --output " + temp("x.mesh") +
+                " --flat-output " + f).status, 2);   // tetrahedra have no flat output
+}
+
+// The Float64 values of the VTU array named `name` (or of the Points array for "Points").
+std::vector<double> vtu_array(const std::string& vtu, const std::string& name)
+{
+  const std::size_t at = name == "Points" ? vtu.find("<Points>") : vtu.find("Name=\"" + name + "\"");
+  std::vector<double> values;
+  if(at == std::string::npos) return values;
+  // The array's own tag holds the name; the Points array is the first one after <Points>.
+  const std::size_t begin = vtu.find('>', name == "Points" ? vtu.find("<DataArray", at) : at) + 1,
+                    end = vtu.find("</DataArray>", begin);
+  std::istringstream in(vtu.substr(begin, end - begin));
+  for(double x; in >> x;) values.push_back(x);
+  return values;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& word)
+{
+  std::size_t n = 0;
+  for(std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
+TEST(CommandLine, PicturesAndDisplacements)
+{
+  const std::string s = temp("pic_s.off"), t = temp("pic_t.off"), o = temp("pic.vtu"), p = temp("pic.svg"),
+                    e = temp("pic_energy.svg"), r = temp("pic.json");
+  write_planar_pair(s, t);
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --svg " + p + " --svg-both --energy-plot " +
+                        e + " --report " + r + " --measure conformal --iterations 7 --threshold 0 --harmonic-start off");
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string svg = slurp(p), plot = slurp(e), vtu = slurp(o);
+  EXPECT_EQ(occurrences(svg, "<polygon"), 2 * 288u);   // the source and the map, side by side
+  EXPECT_NE(svg.find(">conformal per cell, "), std::string::npos);
+  EXPECT_EQ(occurrences(svg, "inverted or flat"), 0u);
+  // The plot: the start and each of the 7 iterations.
+  const std::size_t points = plot.find("points=\""), end = plot.find('"', points + 8);
+  EXPECT_EQ(occurrences(plot.substr(points, end - points), ","), 8u);
+  // The VTU: the map's positions, and the displacement from the source (z = 0 there).
+  const IO::Triangle_soup source = IO::read_triangle_soup(s);
+  const std::vector<double> positions = vtu_array(vtu, "Points"), displacement = vtu_array(vtu, "displacement");
+  ASSERT_EQ(positions.size(), 3 * source.points.size());
+  ASSERT_EQ(displacement.size(), positions.size());
+  for(std::size_t i = 0; i < positions.size(); ++i)
+    EXPECT_NEAR(positions[i] - displacement[i], source.points[i / 3][i % 3], 1e-14) << i;
+  EXPECT_EQ(vtu_array(vtu, "conformal").size(), 288u);
+
+  // A tetrahedral map: the sections of the source and of the map by their middle planes.
+  const std::string m = temp("pic_cube.mesh"), ts = temp("pic_tets.svg");
+  const IO::Tetrahedron_soup cube = kuhn_block(4);
+  IO::Tetrahedron_soup map;
+  map = cube;
+  for(auto& q : map.points) q[0] = 2 * q[0] + 0.1 * q[1] * q[1];   // a stretch and a bend
+  IO::write_MEDIT_soup(m, cube);
+  {   // the map as TetGen writes it: 1-based, a boundary marker per point
+    std::ofstream node(temp("pic_cube_map.node")), ele(temp("pic_cube_map.ele"));
+    node.precision(17);
+    node << map.points.size() << " 3 0 1\n";
+    for(std::size_t v = 0; v < map.points.size(); ++v)
+      node << v + 1 << ' ' << map.points[v][0] << ' ' << map.points[v][1] << ' ' << map.points[v][2] << " 0\n";
+    ele << map.cells.size() << " 4 0\n";
+    for(std::size_t c = 0; c < map.cells.size(); ++c)
+      ele << c + 1 << ' ' << map.cells[c][0] + 1 << ' ' << map.cells[c][1] + 1 << ' ' << map.cells[c][2] + 1 << ' '
+          << map.cells[c][3] + 1 << '\n';
+  }
+  result = run("--source " + m + " --target " + temp("pic_cube_map.ele") + " --output " + temp("pic_cube_out.vtu") + " --svg " + ts +
+               " --svg-both --iterations 3");
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string sections = slurp(ts);
+  // In the source, the plane z = 2 holds a layer of faces: 2 triangles per unit square, 16 squares.
+  const std::size_t first_panel = sections.find("</g>");
+  ASSERT_NE(first_panel, std::string::npos);
+  EXPECT_EQ(occurrences(sections.substr(0, first_panel), "<polygon"), 32u);
+  EXPECT_GE(occurrences(sections.substr(first_panel), "<polygon"), 32u);   // the map's own middle plane
+  const std::vector<double> moved = vtu_array(slurp(temp("pic_cube_out.vtu")), "displacement");
+  ASSERT_EQ(moved.size(), 3 * cube.points.size());
+  for(std::size_t v = 0; v < cube.points.size(); ++v)
+    if(cube.points[v][2] == 0) EXPECT_EQ(moved[3 * v], map.points[v][0] - cube.points[v][0]);   // fixed boundary
+
+  // A PLY source (read by CGAL's reader) with the same target: the same map.
+  {
+    std::ofstream ply(temp("pic_s.ply"));
+    ply.precision(17);
+    ply << "ply\nformat ascii 1.0\nelement vertex " << source.points.size()
+        << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << source.cells.size()
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for(const auto& q : source.points) ply << q[0] << ' ' << q[1] << ' ' << q[2] << '\n';
+    for(const auto& f : source.cells) ply << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+  }
+  result = run("--source " + temp("pic_s.ply") + " --target " + t + " --output " + temp("pic_ply.vtu") +
+               " --measure conformal --iterations 7 --threshold 0 --harmonic-start off");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(vtu_array(slurp(temp("pic_ply.vtu")), "Points"), positions);
+
+  EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + temp("x.off") + " --svg-both").status, 2);
+  EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + temp("x.off") + " --svg " + temp("x.png")).status, 2);
+}
+
+// The options that choose the API's named parameters: weights, order, sweeps, harmonic start, sums.
+TEST(CommandLine, WeightsOrdersSweepsAndWeightedSums)
+{
+  const std::string s = temp("opt_s.off"), t = temp("opt_t.off"), r = temp("opt.json"), o = temp("opt_o.off");
+  write_planar_pair(s, t, 0.02);
+  {   // cells of different areas, so that the weightings differ
+    IO::Triangle_soup graded = IO::read_triangle_soup(s);
+    for(auto& p : graded.points) p[0] = p[0] * (0.5 + p[0]) / 1.5;
+    IO::write_triangle_soup(s, graded);
+  }
+  const auto energies = [&](const std::string& options) {
+    const Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --report " + r + " " + options);
+    EXPECT_EQ(result.status, 0) << options << "\n" << result.output;
+    const std::string json = slurp(r);
+    EXPECT_EQ(json_value(json, "inverted_cells"), 0.) << options;
+    return std::make_pair(json_value(json, "initial_energy"), json_value(json, "final_energy"));
+  };
+  // The start's K per triangle, computed here: uniform weights average it, the default weights
+  // (average volume) weight it by the source's area.
+  const IO::Triangle_soup source = IO::read_triangle_soup(s), target = IO::read_triangle_soup(t);
+  double plain = 0, weighted = 0, area = 0;
+  for(const auto& c : source.cells) {
+    const auto& a = source.points[c[0]]; const auto& b = source.points[c[1]]; const auto& d = source.points[c[2]];
+    const auto& p = target.points[c[0]]; const auto& q = target.points[c[1]]; const auto& u = target.points[c[2]];
+    const double s00 = b[0] - a[0], s01 = d[0] - a[0], s10 = b[1] - a[1], s11 = d[1] - a[1];
+    const double t00 = q[0] - p[0], t01 = u[0] - p[0], t10 = q[1] - p[1], t11 = u[1] - p[1];
+    const double sdet = s00 * s11 - s01 * s10;   // J = T S^-1
+    const double j00 = (t00 * s11 - t01 * s10) / sdet, j01 = (t01 * s00 - t00 * s01) / sdet,
+                 j10 = (t10 * s11 - t11 * s10) / sdet, j11 = (t11 * s00 - t10 * s01) / sdet;
+    const double f = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+    const double K = (f + std::sqrt(f * f - 4 * det * det)) / (2 * det);
+    plain += K / source.cells.size();
+    weighted += K * sdet / 2;
+    area += sdet / 2;
+  }
+  ASSERT_GT(std::abs(plain - weighted / area), 1e-3);
+  EXPECT_NEAR(energies("--measure conformal --iterations 1 --cell-weighting uniform").first, plain, 1e-12 * plain);
+  EXPECT_NEAR(energies("--measure conformal --iterations 1").first, weighted / area, 1e-12 * plain);
+  EXPECT_NEAR(energies("--measure conformal --iterations 1 --cell-weighting volume").first, weighted / area, 1e-12 * plain);
+
+  // A weighted sum is the sum of its terms' energies.
+  const double k = energies("--measure conformal --iterations 1").first, c = energies("--measure isometric --iterations 1").first;
+  const auto sum = energies("--measure 0.5*conformal+isometric --iterations 20");
+  EXPECT_NEAR(sum.first, 0.5 * k + c, 1e-12 * sum.first);
+  EXPECT_LT(sum.second, sum.first);
+  EXPECT_NE(slurp(r).find("\"measure\": \"0.5*conformal+isometric\""), std::string::npos);
+
+  // Vertex weights: all 3 leave the normalized energies as they are; others change the optimum.
+  const std::string w = temp("opt_weights.txt"), bad = temp("opt_bad_weights.txt");
+  {
+    std::ofstream equal(w);
+    for(std::size_t v = 0; v < source.points.size(); ++v) equal << "3\n";
+  }
+  const auto unweighted = energies("--measure symmetric_dirichlet --iterations 30");
+  const std::string unweighted_map = slurp(o);
+  const auto equal = energies("--measure symmetric_dirichlet --iterations 30 --vertex-weights " + w);
+  EXPECT_NEAR(equal.first, unweighted.first, 1e-12 * unweighted.first);
+  {
+    std::ofstream varied(w);
+    for(std::size_t v = 0; v < source.points.size(); ++v) varied << (v % 7 == 0 ? 10 : 1) << "\n";
+  }
+  energies("--measure symmetric_dirichlet --iterations 30 --vertex-weights " + w);
+  EXPECT_NE(slurp(o), unweighted_map);
+  std::ofstream(bad) << "1\n-2\n";
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --vertex-weights " + bad);
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find(bad + ":2: weight -2 is not positive"), std::string::npos) << result.output;
+
+  // The paper's greedy order and Algorithm 3's partition reach the same energy as the defaults.
+  const auto sorted = energies("--measure symmetric_dirichlet --schedule local --iterations 200 --threshold 1e-7");
+  const auto greedy = energies("--measure symmetric_dirichlet --schedule local --iterations 200 --threshold 1e-7 --order greedy");
+  const auto partition = energies("--measure symmetric_dirichlet --schedule local --iterations 200 --threshold 1e-7 "
+                                  "--threads 2 --parallel-sweep partition");
+  EXPECT_NEAR(greedy.second, sorted.second, 5e-3 * (sorted.second - 1));
+  EXPECT_NEAR(partition.second, sorted.second, 5e-3 * (sorted.second - 1));
+  // Without the harmonic start the alternating schedule takes another path.
+  energies("--measure symmetric_dirichlet --iterations 1");
+  const std::string harmonic = slurp(o);
+  energies("--measure symmetric_dirichlet --iterations 1 --harmonic-start off");
+  EXPECT_NE(slurp(o), harmonic);
+  EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --order random").status, 2);
+  EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --harmonic-start yes").status, 2);
 }
 
 // The usage the manual shows is the tool's --help, to the character.

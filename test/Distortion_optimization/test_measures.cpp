@@ -1,6 +1,7 @@
 // Measures, signed SVD and the per-cell kernel (no mesh involved).
 
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
+#include <CGAL/Distortion_optimization/measure_by_name.h>
 #include <CGAL/Distortion_optimization/measures.h>
 
 #include "reference_svd.h"
@@ -31,7 +32,9 @@ auto all_measures()
                          DO::Isometric_dilatation(), DO::ARAP(), DO::Symmetric_dirichlet(),
                          DO::Volume_distortion(), DO::Dirichlet(),
                          DO::Product<DO::Conformal_dilatation, DO::Isometric_dilatation>(),
-                         DO::Weighted_sum<DO::Symmetric_dirichlet, DO::ARAP>(0.7, {}, 0.3, {}), custom);
+                         DO::Weighted_sum<DO::Symmetric_dirichlet, DO::ARAP>(0.7, {}, 0.3, {}), custom,
+                         DO::Product_of_measures({"conformal", "isometric"}),
+                         DO::Sum_of_measures(DO::measures_internal::parse_sum("0.5*conformal+2*isometric*mips")));
 }
 
 template <class F>
@@ -86,6 +89,8 @@ double expected(const std::string& name, const Vector<n>& s)
   if(name == "dirichlet") return s.squaredNorm() / n;
   if(name == "conformal*isometric") return expected<n>("conformal", s) * expected<n>("isometric", s);
   if(name == "custom") return (s.array() - 2.).square().sum();
+  if(name == "0.5*conformal+2*isometric*mips")
+    return 0.5 * expected<n>("conformal", s) + 2 * expected<n>("isometric", s) * expected<n>("mips", s);
   return 0.7 * expected<n>("symmetric_dirichlet", s) + 0.3 * expected<n>("arap", s);
 }
 

@@ -1,9 +1,11 @@
 // Mesh files: the strict Medit reader, the Medit writer and the VTU writer, and what the OFF,
 // OBJ and Medit readers share (bounded lines and reserves, nothing left unread, clear messages).
 
+#include "kuhn_block.h"
 #include "test_files.h"
 
 #include <CGAL/Distortion_optimization/IO/medit.h>
+#include <CGAL/Distortion_optimization/IO/svg.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
 
@@ -11,7 +13,9 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -43,7 +47,7 @@ std::string contents(const std::string& path)
 IO::Tetrahedron_soup read(const std::string& text, const std::string& name = "bad.mesh")
 {
   std::istringstream in(text);
-  return IO::read_MEDIT(in, name);
+  return IO::read_MEDIT_soup(in, name);
 }
 
 // The message of the Invalid_input thrown by reading `in` as `format` ("off", "obj" or "mesh"),
@@ -53,7 +57,7 @@ std::string reader_error(std::istream& in, const std::string& format, const std:
   try {
     if(format == "off") IO::read_OFF(in, name);
     else if(format == "obj") IO::read_OBJ(in, name);
-    else IO::read_MEDIT(in, name);
+    else IO::read_MEDIT_soup(in, name);
   } catch(const DO::Invalid_input& e) {
     return e.what();
   }
@@ -112,7 +116,7 @@ TEST(Medit, WriteThenReadGivesTheSameSoup)
 {
   const std::string path = temp("round_trip.mesh");
   const IO::Tetrahedron_soup s = two_tetrahedra();
-  IO::write_MEDIT(path, s);
+  IO::write_MEDIT_soup(path, s);
   EXPECT_EQ(leftovers(path), 0u);
   const IO::Tetrahedron_soup r = IO::read_tetrahedron_soup(path);
   EXPECT_EQ(r.points, s.points); // exact: 17 digits
@@ -129,7 +133,7 @@ TEST(Medit, WriterWithoutLabelsWritesOne)
   const std::string path = temp("no_labels.mesh");
   IO::Tetrahedron_soup s = two_tetrahedra();
   s.labels.clear();
-  IO::write_MEDIT(path, s);
+  IO::write_MEDIT_soup(path, s);
   EXPECT_EQ(IO::read_tetrahedron_soup(path).labels, std::vector<int>({1, 1}));
   std::remove(path.c_str());
 }
@@ -140,16 +144,16 @@ TEST(Medit, WriterRejectsWhatTheReaderWouldRejectAndWritesNothing)
   std::remove(path.c_str());
   IO::Tetrahedron_soup s = two_tetrahedra();
   s.labels = {1};
-  EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
+  EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
   s = two_tetrahedra();
   s.cells[1][3] = 5;
-  EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
+  EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
   s = two_tetrahedra();
   s.cells[1][3] = 1;
-  EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
+  EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
   s = two_tetrahedra();
   s.points[4][2] = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(IO::write_MEDIT(path, s), DO::Invalid_input);
+  EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
   EXPECT_FALSE(exists(path));
   EXPECT_EQ(leftovers(path), 0u);
 }
@@ -276,7 +280,7 @@ TEST(Medit, UnseekableStreamWithAHugeCountFailsAsTruncatedWithoutAllocating)
   Unseekable_buffer buffer(header + four_vertices + "Tetrahedra 1000000000000\n1 2 3 4 0\n");
   std::istream in(&buffer);
   try {
-    IO::read_MEDIT(in, "pipe");
+    IO::read_MEDIT_soup(in, "pipe");
     ADD_FAILURE() << "no exception";
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("pipe:10: truncated Tetrahedra section: 1000000000000 entries announced, 1 found"),
@@ -285,7 +289,7 @@ TEST(Medit, UnseekableStreamWithAHugeCountFailsAsTruncatedWithoutAllocating)
   // And a good file reads the same through such a stream.
   Unseekable_buffer good(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nEnd\n");
   std::istream in2(&good);
-  EXPECT_EQ(IO::read_MEDIT(in2, "pipe").cells.size(), 1u);
+  EXPECT_EQ(IO::read_MEDIT_soup(in2, "pipe").cells.size(), 1u);
 }
 
 TEST(Medit, RejectsBadValues)
@@ -412,6 +416,82 @@ TEST(Vtu, TetrahedraWithCellArrays)
   EXPECT_EQ(data_array(xml, "Name=\"K\""), std::vector<double>({1.25, 1e308}));
   EXPECT_EQ(data_array(xml, "Name=\"a&lt;b"), std::vector<double>({-1e308, 0.1}));
   EXPECT_EQ(IO::vtu_infinity, 1e308);
+  std::remove(path.c_str());
+}
+
+TEST(Vtu, PointArraysOfVectors)
+{
+  const std::string path = temp("displaced.vtu");
+  const IO::Tetrahedron_soup s = two_tetrahedra();
+  std::vector<std::array<double, 3>> displacement(s.points.size(), {0.5, -1. / 3, 0});
+  IO::write_VTU(path, s.points, s.cells, {{"K", {1, 2}}}, {{"displacement", displacement}});
+  const std::string xml = contents(path);
+  EXPECT_NE(xml.find("<PointData Vectors=\"displacement\">"), std::string::npos);
+  const std::vector<double> values = data_array(xml, "Name=\"displacement\"");
+  ASSERT_EQ(values.size(), 15u);
+  EXPECT_EQ(values[13], -1. / 3);
+  EXPECT_EQ(occurrences(xml, "<DataArray"), occurrences(xml, "</DataArray>"));
+  displacement[2][1] = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::pair<std::string, std::vector<std::array<double, 3>>>> bad[] = {
+    {{"d", displacement}}, {{"d", {{0, 0, 0}}}}, {{"d", std::vector<std::array<double, 3>>(5)}, {"d", std::vector<std::array<double, 3>>(5)}}};
+  const std::string messages[] = {path + ": point array 'd' is not finite at point 2", path + ": point array 'd' has 1 values for 5 points",
+                                  path + ": point array 'd' given twice"};
+  for(int i = 0; i < 3; ++i) {
+    std::remove(path.c_str());
+    try {
+      IO::write_VTU(path, s.points, s.cells, {}, bad[i]);
+      ADD_FAILURE() << messages[i];
+    } catch(const DO::Invalid_input& e) {
+      EXPECT_EQ(e.what(), messages[i]);
+    }
+    EXPECT_FALSE(exists(path));
+  }
+}
+
+// The section of a 3 x 3 x 3 block of cubes (six tetrahedra each) by z = 1.5 covers the 3 x 3
+// square once: its polygons' areas add up to 9, each is convex and counter-clockwise.
+TEST(Svg, CrossSectionsCoverTheSectionAndPicturesCountTheirCells)
+{
+  const IO::Tetrahedron_soup block = kuhn_block(3);
+  std::vector<double> values(block.cells.size(), 2.);
+  values[54] = std::numeric_limits<double>::infinity();   // a tetrahedron of the cube at (0, 0, 1), cut
+  const IO::Svg_panel section = IO::cross_section_panel("section", block.points, block.cells, values);
+  double area = 0;
+  for(const auto& polygon : section.polygons) {
+    ASSERT_GE(polygon.size(), 3u);
+    ASSERT_LE(polygon.size(), 4u);
+    for(std::size_t i = 0; i < polygon.size(); ++i) {
+      const auto &a = polygon[i], &b = polygon[(i + 1) % polygon.size()], &c = polygon[(i + 2) % polygon.size()];
+      EXPECT_GE((b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]), -1e-12);   // convex, counter-clockwise
+      area += (a[0] * b[1] - a[1] * b[0]) / 2;
+    }
+  }
+  EXPECT_NEAR(area, 9., 1e-12);
+  EXPECT_EQ(section.values.size(), section.polygons.size());
+  EXPECT_EQ(std::size_t(std::count(section.values.begin(), section.values.end(), 2.)), section.values.size() - 1);
+
+  // A surface's triangles are drawn on the plane of its two largest extents: here y and z.
+  const std::vector<std::array<double, 3>> wall = {{0, 0, 0}, {0.1, 2, 0}, {0, 0, 3}};
+  const IO::Svg_panel side = IO::triangle_panel("wall", wall, {{{0, 1, 2}}}, {1.5});
+  const std::vector<std::array<double, 2>> expected = {{0, 0}, {2, 0}, {0, 3}};
+  EXPECT_EQ(side.polygons.front(), expected);
+
+  const std::string path = temp("section.svg");
+  IO::write_SVG(path, {section, side}, "K");
+  const std::string svg = contents(path);
+  EXPECT_EQ(occurrences(svg, "<polygon"), section.polygons.size() + 1);
+  EXPECT_EQ(occurrences(svg, "fill=\"#d62728\"/>"), 1u);   // the infinite value, in red
+  EXPECT_NE(svg.find(">K per cell, linear scale</text>"), std::string::npos);
+  EXPECT_NE(svg.find("> 1 inverted or flat"), std::string::npos);
+  std::remove(path.c_str());
+  for(const auto& bad : {std::vector<IO::Svg_panel>{}, std::vector<IO::Svg_panel>{{"p", {{{0, 0}, {1, 0}, {0, 1}}}, {}}},
+                         std::vector<IO::Svg_panel>{{"p", {{{0, 0}, {1, 0}, {0, std::nan("")}}}, {1}}}}) {
+    EXPECT_THROW(IO::write_SVG(path, bad, "K"), DO::Invalid_input);
+    EXPECT_FALSE(exists(path));
+  }
+  EXPECT_THROW(IO::write_energy_plot_SVG(path, {1, std::numeric_limits<double>::infinity()}, "E"), DO::Invalid_input);
+  IO::write_energy_plot_SVG(path, {3, 2, 1.5}, "E");
+  EXPECT_NE(contents(path).find("<polyline"), std::string::npos);
   std::remove(path.c_str());
 }
 
@@ -652,7 +732,7 @@ TEST(Readers, SkipAUtf8ByteOrderMark)
   ASSERT_EQ(from_obj.points.size(), 3u); // the first vertex was dropped
   EXPECT_EQ(from_obj.points, from_off.points);
   EXPECT_EQ(from_obj.cells, from_off.cells);
-  EXPECT_EQ(IO::read_MEDIT(mesh).cells.size(), 1u);
+  EXPECT_EQ(IO::read_MEDIT_soup(mesh).cells.size(), 1u);
   // Only at the start of the file.
   EXPECT_READER_REJECTED("obj", triangle_obj + bom + "v 0 0 0\n", "bad.obj:5: '\xEF\xBB\xBFv' is not an OBJ statement");
 }
@@ -682,7 +762,7 @@ TEST(Readers, AcceptSubnormalCoordinates)
   const IO::Triangle_soup from_obj = IO::read_OBJ(obj);
   EXPECT_EQ(from_obj.points[0][2], 1e-320);
   EXPECT_EQ(from_obj.points[2][2], -std::numeric_limits<double>::denorm_min());
-  EXPECT_EQ(IO::read_MEDIT(mesh).points[0][2], 1e-320);
+  EXPECT_EQ(IO::read_MEDIT_soup(mesh).points[0][2], 1e-320);
   // Below the smallest subnormal a coordinate rounds to zero; above the largest double it is refused.
   EXPECT_READER_REJECTED("off", "OFF\n3 1 0\n0 0 1e400\n1 0 0\n0 1 0\n3 0 1 2\n", "bad.off:3: coordinate '1e400' is not a finite number");
 
@@ -699,7 +779,132 @@ TEST(Readers, AcceptSubnormalCoordinates)
   IO::Tetrahedron_soup tetrahedra = two_tetrahedra();
   tetrahedra.points[4][2] = 2.5e-315;
   const std::string path = temp("subnormal.mesh");
-  IO::write_MEDIT(path, tetrahedra);
+  IO::write_MEDIT_soup(path, tetrahedra);
   EXPECT_EQ(IO::read_tetrahedron_soup(path).points, tetrahedra.points);
   std::remove(path.c_str());
+}
+
+// Texture coordinates: kept per face corner by read_OBJ, written back by write_triangle_soup, and
+// made one per vertex where the file has no seam.
+TEST(Obj, TextureCoordinatesRoundTripAndSeamsAreRefused)
+{
+  namespace IO = CGAL::Distortion_optimization::IO;
+  std::istringstream in("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 0.25 0\nvt 0.25 0.5\nvt 0 0.5\n"
+                        "f 1/1 2/2 3/3\nf -4/-4 -2/-2 -1/-1\n");
+  IO::Triangle_soup soup = IO::read_OBJ(in, "uv.obj");
+  ASSERT_EQ(soup.texture_coordinates.size(), 4u);
+  const std::vector<std::array<std::size_t, 3>> corners = {{0, 1, 2}, {0, 2, 3}};
+  EXPECT_EQ(soup.cell_texture_indices, corners);
+  const std::vector<std::array<double, 2>> uv = IO::per_vertex_texture_coordinates(soup, "uv.obj");
+  const std::vector<std::array<double, 2>> expected = {{0, 0}, {0.25, 0}, {0.25, 0.5}, {0, 0.5}};
+  EXPECT_EQ(uv, expected);
+
+  const std::string path = temp("uv.obj");
+  IO::write_triangle_soup(path, soup);
+  const IO::Triangle_soup back = IO::read_triangle_soup(path);
+  EXPECT_EQ(back.points, soup.points);
+  EXPECT_EQ(back.texture_coordinates, soup.texture_coordinates);
+  EXPECT_EQ(back.cell_texture_indices, soup.cell_texture_indices);
+  EXPECT_THROW(IO::write_triangle_soup(temp("uv.off"), soup), CGAL::Distortion_optimization::Invalid_input);
+
+  // A file without texture: none kept; a seam and a face vertex without one are refused.
+  std::istringstream plain("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_TRUE(IO::per_vertex_texture_coordinates(IO::read_OBJ(plain, "plain.obj"), "plain.obj").empty());
+  soup.cell_texture_indices[1][0] = 2;   // vertex 0 has (0, 0) in face 0 and (0.25, 0.5) in face 1
+  EXPECT_THROW(IO::per_vertex_texture_coordinates(soup, "seam.obj"), CGAL::Distortion_optimization::Invalid_input);
+  std::istringstream mixed("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3/1\n");
+  EXPECT_THROW(IO::per_vertex_texture_coordinates(IO::read_OBJ(mixed, "mixed.obj"), "mixed.obj"),
+               CGAL::Distortion_optimization::Invalid_input);
+}
+
+// PLY, STL and GOCAD go through CGAL's readers, then through the checks of the package's own.
+TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
+{
+  const std::string data = DISTORTION_OPTIMIZATION_DATA_DIR;
+  const IO::Triangle_soup ply = IO::read_triangle_soup(data + "/sphere.ply"), stl = IO::read_triangle_soup(data + "/sphere.stl");
+  EXPECT_EQ(ply.points.size(), 162u);
+  EXPECT_EQ(ply.cells.size(), 320u);
+  EXPECT_EQ(stl.points.size(), 162u);   // an STL lists corners: equal points are one vertex
+  EXPECT_EQ(stl.cells.size(), 320u);
+  const IO::Triangle_soup pig = IO::read_triangle_soup(data + "/pig.stl");
+  EXPECT_EQ(pig.cells.size(), 16848u);
+  std::vector<bool> used(pig.points.size(), false);
+  for(const auto& t : pig.cells)
+    for(std::size_t v : t) used[v] = true;
+  EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
+
+  const auto message = [](const std::string& name, const std::string& text) {
+    const std::string path = temp(name);
+    std::ofstream(path, std::ios::binary) << text;
+    try {
+      IO::read_triangle_soup(path);
+    } catch(const DO::Invalid_input& e) {
+      const std::string what = e.what();
+      return what.substr(0, path.size()) == path ? what.substr(path.size()) : what;
+    }
+    return std::string("no error");
+  };
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string points = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  EXPECT_EQ(message("quad.ply", header + points + "4 0 1 2 3\n"), ": face 0 is not a triangle (4 vertices)");
+  EXPECT_EQ(message("repeat.ply", header + points + "3 0 1 1\n"), ": face 0 repeats a vertex");
+  EXPECT_EQ(message("range.ply", header + points + "3 0 1 9\n"), ": face 0 has vertex index 9 out of range");
+  // A NaN cannot be written in ASCII PLY (CGAL's reader refuses the token) but can in binary.
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const float coordinates[9] = {0, 0, std::numeric_limits<float>::quiet_NaN(), 1, 0, 0, 0, 1, 0};
+  const unsigned char corners = 3;
+  const std::int32_t face[3] = {0, 1, 2};
+  binary.append(reinterpret_cast<const char*>(coordinates), sizeof coordinates);   // x86: little-endian
+  binary.append(reinterpret_cast<const char*>(&corners), 1);
+  binary.append(reinterpret_cast<const char*>(face), sizeof face);
+  EXPECT_EQ(message("nan.ply", binary), ": vertex 0 has a non-finite coordinate");
+  EXPECT_EQ(message("nan_text.ply", header + "0 0 nan\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"), ": CGAL's PLY reader could not read the file");
+  EXPECT_EQ(message("ok.ply", header + points + "3 0 1 2\n"), "no error");
+  EXPECT_EQ(message("garbage.stl", "this is not an STL file\n").substr(0, 1), ":");
+  EXPECT_EQ(message("empty.ts", ""), ": CGAL's TS reader could not read the file");
+  EXPECT_EQ(message("x.vtp", "whatever"), ": unsupported extension (use .off, .obj, .ply, .stl or .ts)");
+}
+
+TEST(TetGen, ReadsBothBasesQuadraticCellsAndRefusesMalformedPairs)
+{
+  const auto read = [](const std::string& node, const std::string& ele) {
+    std::istringstream n(node), e(ele);
+    return IO::read_TetGen(n, e, "n", "e");
+  };
+  const std::string node0 = "# TetGen\n5 3 1 1\n0 0 0 0 7 1\n1 1 0 0 7 1\n2 0 1 0 7 1\n3 0 0 1 7 1\n4 1 1 1 7 0\n";
+  const IO::Tetrahedron_soup soup = read(node0, "2 4 1\n0 0 1 2 3 5\n1 1 2 3 4 -2\n");
+  EXPECT_EQ(soup.points.size(), 5u);
+  EXPECT_EQ(soup.points[4], (std::array<double, 3>{1, 1, 1}));
+  EXPECT_EQ(soup.cells, (std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
+  EXPECT_EQ(soup.labels, (std::vector<int>{5, -2}));
+  const std::string node1 = "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  const IO::Tetrahedron_soup quadratic = read(node1, "1 10 0\n1 1 2 3 4 1 2 3 4 1 2\n");
+  EXPECT_EQ(quadratic.cells, (std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}}));
+  EXPECT_TRUE(quadratic.labels.empty());
+
+  const auto message = [&](const std::string& node, const std::string& ele) {
+    try {
+      read(node, ele);
+    } catch(const DO::Invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string ele1 = "1 4 0\n1 1 2 3 4\n";
+  EXPECT_EQ(message("4 2 0 0\n", ele1), "n:1: dimension 2: only 3D meshes are supported");
+  EXPECT_EQ(message("0 3 0 0\n", ele1), "n:1: no point (points kept in a .poly file are not supported)");
+  EXPECT_EQ(message("4 3 0 0\n1 0 0 0\n3 1 0 0\n", ele1), "n:3: point index 3 out of sequence (2 expected)");
+  EXPECT_EQ(message("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n", ele1), "n:4: truncated: 4 points announced, 3 found");
+  EXPECT_EQ(message("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 inf 0\n4 0 0 1\n", ele1), "n:4: coordinate 'inf' is not a finite number");
+  EXPECT_EQ(message(node1 + "5 0 0 0\n", ele1), "n:6: '5' after the 4 points the header announces");
+  EXPECT_EQ(message("4 3 0 1\n1 0 0 0\n", ele1), "n:2: point line with 4 values, the header announces 5");
+  EXPECT_EQ(message(node1, "1 4 0\n1 1 2 3 5\n"), "e:2: tetrahedron 0 has node index 5 out of range");
+  EXPECT_EQ(message(node1, "1 4 0\n1 1 2 3 3\n"), "e:2: tetrahedron 0 repeats a vertex");
+  EXPECT_EQ(message(node1, "1 4 0\n0 1 2 3 4\n"), "e:2: tetrahedron index 0 out of sequence (1 expected)");
+  EXPECT_EQ(message(node1, "1 4 1\n1 1 2 3 4 2.5\n"), "e:2: region attribute 2.5 is not an integer label");
+  EXPECT_EQ(message(node1, "1 6 0\n"), "e:1: 6 nodes per tetrahedron (4 or 10 expected)");
+  EXPECT_EQ(message(node1, "2 4 0\n1 1 2 3 4\n"), "e:2: truncated: 2 tetrahedra announced, 1 found");
+  EXPECT_EQ(message(node1, "1 4 0\n1 1 2 3 x\n"), "e:2: 'x' is not an integer");
 }

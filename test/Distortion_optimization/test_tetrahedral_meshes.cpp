@@ -1,6 +1,7 @@
 // minimize_distortion on Mesh_complex_3_in_triangulation_3: Mesh_3 and TetGen meshes, the radial
 // map of the paper's Fig. 5, start maps, write-back only to complex vertices.
 
+#include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/tetrahedralize_with_tetgen.h>
@@ -25,7 +26,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -159,6 +162,45 @@ TEST(TetrahedralMeshes, RadialMapOfAMesh3BallImprovesWithoutFlips)
     EXPECT_FALSE(boundary.count(v)) << "a fixed vertex was written";
   }
   EXPECT_EQ(storage.size(), start.size());
+}
+
+// TetGen's own writer (tetgenio::save_nodes, save_elements: 1-based, as the tetgen program
+// writes, with a region attribute per tetrahedron) read back by read_tetrahedron_soup.
+TEST(TetrahedralMeshes, TetgenFilesAreReadBackInTheirOrder)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  tetgen_cube(0.05, points, tets);
+  tetgenio io;   // frees its lists
+  io.firstnumber = 1;
+  io.numberofpoints = static_cast<int>(points.size());
+  io.pointlist = new REAL[3 * points.size()];
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int d = 0; d < 3; ++d) io.pointlist[3 * i + d] = points[i][d];
+  io.numberoftetrahedra = static_cast<int>(tets.size());
+  io.numberofcorners = 4;
+  io.tetrahedronlist = new int[4 * tets.size()];
+  io.numberoftetrahedronattributes = 1;
+  io.tetrahedronattributelist = new REAL[tets.size()];
+  for(std::size_t t = 0; t < tets.size(); ++t) {
+    for(int k = 0; k < 4; ++k) io.tetrahedronlist[4 * t + k] = static_cast<int>(tets[t][k]) + 1;
+    io.tetrahedronattributelist[t] = double(t % 3 + 1);
+  }
+  std::string stem = ::testing::TempDir() + "distortion_tetgen_cube";
+  io.save_nodes(&stem[0]);
+  io.save_elements(&stem[0]);
+  for(const std::string& path : {stem + ".ele", stem + ".node"}) {
+    const DO::IO::Tetrahedron_soup soup = DO::IO::read_tetrahedron_soup(path);
+    ASSERT_EQ(soup.points.size(), points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      for(int d = 0; d < 3; ++d) EXPECT_NEAR(soup.points[i][d], points[i][d], 1e-15) << i;
+    EXPECT_EQ(soup.cells, tets);
+    ASSERT_EQ(soup.labels.size(), tets.size());
+    for(std::size_t t = 0; t < tets.size(); ++t) EXPECT_EQ(soup.labels[t], int(t % 3 + 1));
+  }
+  std::remove((stem + ".node").c_str());
+  EXPECT_THROW(DO::IO::read_tetrahedron_soup(stem + ".ele"), DO::Invalid_input);   // the pair is needed
+  std::remove((stem + ".ele").c_str());
 }
 
 TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)

@@ -11,6 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -68,6 +71,7 @@ inline std::size_t measures_internal::built_in_measure_number(const std::string&
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// The product of built-in measures chosen at run time by their names, e.g. K * C (the paper's Fig. 9).
+/// \cgalModels `DistortionMeasure`
 class Product_of_measures
 {
 public:
@@ -151,13 +155,131 @@ private:
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
+/// A weighted sum of products of built-in measures chosen at run time, e.g.
+/// 0.5 K + C (`"0.5*conformal+isometric"`), the run-time counterpart of `Weighted_sum`.
+/// \cgalModels `DistortionMeasure`
+class Sum_of_measures
+{
+public:
+  /// One term: a positive weight times a product of measures.
+  struct Term
+  {
+    double weight;
+    Product_of_measures product;
+  };
+
+  /// \throws Invalid_input if there is no term or a weight is not positive and finite.
+  explicit Sum_of_measures(std::vector<Term> terms) : terms_(std::move(terms))
+  {
+    if(terms_.empty()) throw Invalid_input("a sum of measures has no term");
+    for(const Term& t : terms_)
+      if(!(t.weight > 0) || !std::isfinite(t.weight))
+        throw Invalid_input("the weight of '" + t.product.name() + "' is not a positive number");
+  }
+
+  std::string name() const
+  {
+    std::string s;
+    for(const Term& t : terms_) {
+      std::ostringstream weight;
+      weight << t.weight;
+      s += (s.empty() ? "" : "+") + (t.weight == 1 ? "" : weight.str() + "*") + t.product.name();
+    }
+    return s;
+  }
+  bool is_normalized() const
+  {
+    return std::all_of(terms_.begin(), terms_.end(), [](const Term& t) { return t.product.is_normalized(); });
+  }
+  template <int n> bool is_symmetric() const
+  {
+    return std::all_of(terms_.begin(), terms_.end(), [](const Term& t) { return t.product.template is_symmetric<n>(); });
+  }
+  template <int n>
+  double laplacian_weight(const Singular_values<n>& s) const
+  {
+    double w = 0;   // the largest term's, as Weighted_sum does
+    for(const Term& t : terms_) w = std::max(w, t.product.template laplacian_weight<n>(s));
+    return w;
+  }
+  template <int n>
+  double value(const Singular_values<n>& s) const
+  {
+    double v = 0;
+    for(const Term& t : terms_) v += t.weight * t.product.template value<n>(s);
+    return v;
+  }
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    Singular_values<n> g = Singular_values<n>::Zero();
+    for(const Term& t : terms_) g += t.weight * t.product.template gradient<n>(s);
+    return g;
+  }
+
+private:
+  std::vector<Term> terms_;
+};
+
+namespace measures_internal {
+
+// A whole token that is a number (strtod's syntax), into x.
+inline bool whole_number(const std::string& token, double& x)
+{
+  if(token.empty()) return false;
+  char* end = nullptr;
+  x = std::strtod(token.c_str(), &end);
+  return end == token.c_str() + token.size();
+}
+
+// "w1*a*b+w2*c+...": the terms of a sum; the weight of a term is the product of its numbers (1 if none).
+inline std::vector<Sum_of_measures::Term> parse_sum(const std::string& name)
+{
+  std::vector<Sum_of_measures::Term> terms;
+  std::size_t begin = 0;
+  for(bool last = false; !last; ) {
+    const std::size_t plus = name.find('+', begin);
+    last = plus == std::string::npos;
+    const std::string term = name.substr(begin, last ? std::string::npos : plus - begin);
+    double weight = 1;
+    std::vector<std::string> factors;
+    std::size_t b = 0;
+    for(bool end = false; !end; ) {
+      const std::size_t star = term.find('*', b);
+      end = star == std::string::npos;
+      const std::string token = term.substr(b, end ? std::string::npos : star - b);
+      double x;
+      if(whole_number(token, x)) weight *= x;
+      else factors.push_back(token);
+      b = star + 1;
+    }
+    if(factors.empty()) throw Invalid_input("the term '" + term + "' of '" + name + "' has no measure");
+    terms.push_back({weight, Product_of_measures(factors)});
+    begin = plus + 1;
+  }
+  return terms;
+}
+
+} // namespace measures_internal
+
+/// \ingroup PkgDistortionOptimizationMeasures
 /// Calls `f(measure)` with the measure named `name`: one of `measure_names()` (passed as its own
-/// type, so the SVD-free forms are used), or a product of them written `a*b*...` (passed as a
-/// `Product_of_measures`). Returns what `f` returns.
-/// \throws Invalid_input for an unknown name.
+/// type, so the SVD-free forms are used), a product of them written `a*b*...` (passed as a
+/// `Product_of_measures`), or a weighted sum of such products written `w1*a+w2*b*c+...` (passed as
+/// a `Sum_of_measures`; a weight is a positive number among a term's factors, 1 if none). Returns
+/// what `f` returns; `f` must return the same type for each kind of measure.
+/// \throws Invalid_input for an unknown name or a weight that is not positive and finite.
 template <class F>
 decltype(auto) with_measure(const std::string& name, F&& f)
 {
+  bool weighted = name.find('+') != std::string::npos;
+  for(std::size_t begin = 0; !weighted && begin <= name.size(); ) {
+    const std::size_t star = std::min(name.find('*', begin), name.size());
+    double x;
+    weighted = measures_internal::whole_number(name.substr(begin, star - begin), x);
+    begin = star + 1;
+  }
+  if(weighted) return f(Sum_of_measures(measures_internal::parse_sum(name)));
   if(name.find('*') != std::string::npos) {
     std::vector<std::string> factors;
     std::size_t begin = 0;

@@ -27,32 +27,9 @@ namespace Distortion_optimization {
 /// sign of det J, so sigma_n <= 0 means a degenerate or inverted cell.
 template <int n> using Singular_values = Eigen::Matrix<double, n, 1>;
 
+/// \ingroup PkgDistortionOptimizationMeasures
 /// The n x n Jacobian of a simplicial map on one cell.
 template <int n> using Jacobian = Eigen::Matrix<double, n, n>;
-
-/*!
-\ingroup PkgDistortionOptimizationMeasures
-\page MeasureConcept The `DistortionMeasure` concept
-
-A model provides, for n = 2 and n = 3:
-- `template <int n> double value(const Singular_values<n>& s) const`: D(s); `+infinity` where the
-  measure is normalized and `s[n-1] <= 0` (degenerate or inverted cell);
-- `template <int n> Singular_values<n> gradient(const Singular_values<n>& s) const`: dD/dsigma_i
-  (NaN where the value is infinite);
-- `bool is_normalized() const`: D >= D(1,...,1) and D -> infinity as sigma_n -> 0 (Appendix C.1);
-  the optimizer refuses inverted starts for such measures;
-- `template <int n> bool is_symmetric() const`: D(s) = D(1/s_n, ..., 1/s_1) (C.6);
-- `std::string name() const`.
-A measure is *regular* (RDM) when it is normalized and symmetric (and smooth almost everywhere,
-which holds for all the measures here).
-
-Optionally, a model may add `template <int n, class T> T value_of_invariants(const
-Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const`: D as a function of the invariants of
-J and, if `dI` is not null, its partial derivatives in them. The package then uses it instead of an
-SVD, for one cell (T = double) or for several at once (T a vector of doubles on which arithmetic,
-comparisons and ?: act lane by lane). For a normalized measure its result is ignored where
-det J <= 0: the package returns +infinity there itself.
-*/
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// The invariants of a Jacobian through which some measures are written without its SVD:
@@ -120,7 +97,7 @@ double laplacian_weight(const Measure& m, const Singular_values<n>& s)
 inline double conformal_weight(double s) { return 1. / (s * s); }
 inline double isometric_weight(double s) { return (1. + 3. / power<4>(s)) / 4; }
 
-// What the built-in measures declare about themselves (see the concept above), by family.
+// What the built-in measures declare about themselves (see the concept DistortionMeasure), by family.
 template <double (*weight)(double)>
 struct Regular_measure
 {
@@ -154,6 +131,7 @@ struct Pair_of_measures    // what a combination of two measures inherits from b
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Quasi-conformal dilatation K = max(K_I, K_O) (eq. 8): K_I = s_1...s_{n-1} / s_n^{n-1},
 /// K_O = s_1^{n-1} / (s_2...s_n). Equals the condition number in 2D. Regular, minimum 1.
+/// \cgalModels `DistortionMeasure`
 struct Conformal_dilatation : measures_internal::Regular_measure<measures_internal::conformal_weight>
 {
   std::string name() const { return "conformal"; }
@@ -185,6 +163,7 @@ struct Conformal_dilatation : measures_internal::Regular_measure<measures_intern
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Condition number (linear dilatation) s_1 / s_n (eq. 9). Regular, minimum 1.
+/// \cgalModels `DistortionMeasure`
 struct Condition_number : measures_internal::Regular_measure<measures_internal::conformal_weight>
 {
   std::string name() const { return "condition"; }
@@ -209,6 +188,7 @@ struct Condition_number : measures_internal::Regular_measure<measures_internal::
 /// MIPS energy (s_1^2 + ... + s_n^2) / (s_1...s_n)^{2/n} = trace(J^T J) / det(J)^{2/n} (eq. 11).
 /// In 2D this is exactly eq. 10, s_1/s_2 + s_2/s_1, so one measure serves both equations.
 /// Normalized (minimum n); symmetric only in 2D.
+/// \cgalModels `DistortionMeasure`
 struct MIPS
 {
   std::string name() const { return "mips"; }
@@ -241,6 +221,7 @@ struct MIPS
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Quasi-isometric dilatation C = max(s_1, 1/s_n) (eq. 12). Regular, minimum 1.
+/// \cgalModels `DistortionMeasure`
 struct Isometric_dilatation : measures_internal::Regular_measure<measures_internal::isometric_weight>
 {
   std::string name() const { return "isometric"; }
@@ -263,6 +244,7 @@ struct Isometric_dilatation : measures_internal::Regular_measure<measures_intern
 /// As-rigid-as-possible energy sum (s_i - 1)^2 (eq. 13), with the signed s_n, so that the
 /// nearest rotation (never a reflection) is the reference. Not normalized (finite on inverted
 /// cells), not symmetric; minimum 0.
+/// \cgalModels `DistortionMeasure`
 struct ARAP : measures_internal::Unbounded_measure
 {
   std::string name() const { return "arap"; }
@@ -281,6 +263,7 @@ struct ARAP : measures_internal::Unbounded_measure
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Symmetric Dirichlet energy (1/2n) sum (s_i^2 + s_i^-2) (eq. 14). Regular, minimum 1.
+/// \cgalModels `DistortionMeasure`
 struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_internal::isometric_weight>
 {
   std::string name() const { return "symmetric_dirichlet"; }
@@ -310,6 +293,7 @@ struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_interna
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Volume (area in 2D) distortion V = max(det J, 1/det J) (eq. 15). Regular, minimum 1.
+/// \cgalModels `DistortionMeasure`
 struct Volume_distortion : measures_internal::Regular_measure<measures_internal::isometric_weight>
 {
   std::string name() const { return "volume"; }
@@ -339,6 +323,7 @@ struct Volume_distortion : measures_internal::Regular_measure<measures_internal:
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Dirichlet energy (1/n) sum s_i^2 (eq. 16). Not normalized (its minimum is the collapse to a
 /// point), not symmetric; 1 on rigid maps.
+/// \cgalModels `DistortionMeasure`
 struct Dirichlet : measures_internal::Unbounded_measure
 {
   std::string name() const { return "dirichlet"; }
@@ -371,6 +356,7 @@ struct Dirichlet : measures_internal::Unbounded_measure
 /// ones included (not normalized), and as eps -> 0 it grows without bound on inverted cells while it
 /// stays bounded on positive ones: minimizing it for decreasing eps unfolds a map
 /// (`Distortion_optimization::untangle()`). `theta` defaults to the paper's 1/128 in 2D, 1/2 in 3D.
+/// \cgalModels `DistortionMeasure`
 struct Untangling_barrier : measures_internal::Unbounded_measure
 {
   double epsilon = 1;
@@ -435,6 +421,7 @@ struct Untangling_barrier : measures_internal::Unbounded_measure
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Product of two measures, e.g. K * C (the paper's Fig. 9). Normalized / symmetric when both are.
+/// \cgalModels `DistortionMeasure` (when `A` and `B` are models)
 template <class A, class B>
 struct Product : measures_internal::Pair_of_measures<A, B>
 {
@@ -458,6 +445,7 @@ struct Product : measures_internal::Pair_of_measures<A, B>
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Weighted sum wa * A + wb * B of two measures. Normalized / symmetric when both are.
+/// \cgalModels `DistortionMeasure` (when `A` and `B` are models)
 template <class A, class B>
 struct Weighted_sum : measures_internal::Pair_of_measures<A, B>
 {
@@ -492,6 +480,7 @@ struct Weighted_sum : measures_internal::Pair_of_measures<A, B>
 /// A measure from two callables: `value(s)` and `gradient(s)`, each called with a
 /// `Singular_values<n>` (use generic lambdas to serve n = 2 and n = 3). The callables must
 /// return +infinity (value) where the map is not admissible, e.g. `s[n-1] <= 0`.
+/// \cgalModels `DistortionMeasure`
 template <class ValueFunction, class GradientFunction>
 struct Custom_measure
 {

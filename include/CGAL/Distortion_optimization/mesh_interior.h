@@ -334,10 +334,115 @@ using Interior_mesh_traits_of = typename CGAL::internal_np::Lookup_named_param_d
 
 } // namespace internal
 
-/// \ingroup PkgDistortionOptimizationRef
-/// The criteria `mesh_interior()` would use for `surface` and `np`: the given ones and the
-/// defaults, with the enclosed volume and the area. Checks the surface as `mesh_interior()` does.
-/// \throws Invalid_input as `mesh_interior()` (except for an output with no cell).
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+The criteria `mesh_interior()` would use for `surface` and `np`: the given ones and the
+defaults, with the enclosed volume and the area. Checks the surface as `mesh_interior()` does.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` (e.g. `CGAL::Surface_mesh`)
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param surface a closed, 2-manifold triangle surface without self-intersections
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below; the others of `mesh_interior()` (its optimizers and
+       `maximum_number_of_vertices`) are ignored
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `surface`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and a 3D point type (with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`)
+                   as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, surface)`}
+    \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+                    must be available in `TriangleMesh`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `surface` a unique index, which orders the
+                          vertices of the copy of the surface and names them in error messages}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+    \cgalParamExtra{The indices need not be contiguous (e.g. a `Surface_mesh` with removed elements).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `surface` a unique index, which names the faces
+                          in error messages}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{the kernel of the output: only its type is used}
+    \cgalParamType{a class model of `Kernel` with inexact constructions, as Mesh_3 requires}
+    \cgalParamDefault{`CGAL::Exact_predicates_inexact_constructions_kernel`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_size}
+    \cgalParamDescription{an upper bound on the circumradius of the tetrahedra (a length)
+                          (`Distortion_optimization::parameters::cell_size()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`max(cbrt(V / 6000), sqrt(A / 2400))`, V the volume enclosed by `surface` and A its area}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_radius_edge_ratio}
+    \cgalParamDescription{an upper bound on circumradius / shortest edge of the tetrahedra
+                          (`Distortion_optimization::parameters::cell_radius_edge_ratio()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`3`}
+    \cgalParamExtra{It must be finite and at least 2 (where Mesh_3 is proved to terminate).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{facet_size}
+    \cgalParamDescription{an upper bound on the radius of the surface Delaunay ball of a boundary facet (a length)
+                          (`Distortion_optimization::parameters::facet_size()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the cell size}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{facet_distance}
+    \cgalParamDescription{an upper bound on the distance from the circumcentre of a boundary facet to `surface`
+                          (a length) (`Distortion_optimization::parameters::facet_distance()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the facet size / 10}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{facet_angle}
+    \cgalParamDescription{a lower bound on the angles of the boundary facets, in degrees
+                          (`Distortion_optimization::parameters::facet_angle()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`25`}
+    \cgalParamExtra{It must be in (0, 30] (Mesh_3 is proved to terminate up to 30).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{edge_size}
+    \cgalParamDescription{an upper bound on the size of the protecting balls (hence the edges) along the sharp edges
+                          (a length) (`Distortion_optimization::parameters::edge_size()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the facet size}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sharp_edge_angle}
+    \cgalParamDescription{an edge of `surface` is sharp, and kept as a polyline of the output, when the normals of its
+                          two faces make an angle larger than this, in degrees
+                          (`Distortion_optimization::parameters::sharp_edge_angle()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`60`}
+    \cgalParamExtra{It must be in (0, 180]; `180` keeps no edge.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws Invalid_input as `mesh_interior()` (except for an output with no cell or
+`maximum_number_of_vertices`).
+*/
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Interior_mesh_sizes interior_mesh_sizes(const TriangleMesh& surface,
                                         const NamedParameters& np = CGAL::parameters::default_values())
@@ -347,55 +452,181 @@ Interior_mesh_sizes interior_mesh_sizes(const TriangleMesh& surface,
   return internal::read_interior_mesh_sizes(checked.volume, checked.area, np);
 }
 
-/// \ingroup PkgDistortionOptimizationRef
-/// Meshes the inside of the closed triangle surface `surface` with tetrahedra (CGAL's Mesh_3 on a
-/// `Polyhedral_mesh_domain_with_features_3`, sharp edges protected) and returns the complex: its
-/// cells are positively oriented, its boundary vertices lie on `surface` (up to rounding) and,
-/// where `surface` has sharp edges, its boundary keeps them (a cube keeps its 8 corners and 12
-/// edges). The result is what `map_vertices()`, `star_shaped_to_unit_ball()`, `harmonic_map()`,
-/// `CGAL::compute_distortion()` and `CGAL::minimize_distortion()` take. `surface` is not modified;
-/// its orientation does not matter; several components (disjoint or nested, e.g. a hollow ball)
-/// are meshed as the volume they bound. Two runs with the same input give the same complex (the
-/// random generator of Mesh_3 is seeded, the optimizers have no time limit).
-///
-/// Defaults. Without sizes, the criteria scale with the enclosed volume V and the area A of the
-/// surface: cell_size = facet_size = edge_size = max(cbrt(V / 6000), sqrt(A / 2400)),
-/// facet_distance = facet_size / 10, facet_angle = 25, cell_radius_edge_ratio = 3, and
-/// sharp_edge_angle = 60. This aims at about 3.10^4 tetrahedra (the volume term) with at most
-/// about 8.10^3 boundary facets (the area term, for thin shapes). On the 66 closed, 2-manifold,
-/// self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.10^5
-/// tetrahedra (median 2.7.10^4) in 0.1 to 6 s (median 0.4 s) on one core; the largest counts come
-/// from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
-/// with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
-/// (mpi_triang.off) stops at `maximum_number_of_vertices`. Sizes are in the units of the input, so
-/// a scaled input gives the scaled mesh. A size that is given also sets the defaults of the sizes
-/// derived from it: `cell_size(h)` alone makes facet_size = edge_size = h and facet_distance =
-/// h / 10.
-///
-/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` (e.g. `CGAL::Surface_mesh`)
-/// \param surface a closed, 2-manifold triangle surface without self-intersections
-/// \param np named parameters:
-///   - `CGAL::parameters::vertex_point_map`: the positions of the vertices of `surface`; default
-///     its internal point map;
-///   - `CGAL::parameters::geom_traits`: only its type is used, the kernel of the output (inexact
-///     constructions); default `CGAL::Exact_predicates_inexact_constructions_kernel`;
-///   - `Distortion_optimization::parameters::cell_size`, `cell_radius_edge_ratio`, `facet_size`,
-///     `facet_distance`, `facet_angle`, `edge_size`, `sharp_edge_angle`: the Mesh_3 criteria
-///     (`Interior_mesh_sizes`);
-///   - `Distortion_optimization::parameters::odt_iterations`, `lloyd_iterations` (default 0: off),
-///     `perturb_slivers`, `exude_slivers` (default `false`): Mesh_3's optimizers, run in this
-///     order after the refinement. Off by default: the optimizers of this package start from the
-///     refined mesh, and they cost far more than it (sphere.off, 2.6.10^4 tetrahedra: refinement
-///     0.13 s; ODT 10 iterations 2.4 s, Lloyd 10 iterations 3.7 s, perturbation 0.6 s,
-///     exudation 2.4 s);
-///   - `Distortion_optimization::parameters::maximum_number_of_vertices`: where Mesh_3 stops (and
-///     this function throws); default 10 times the vertices the sizes ask for.
-/// \returns the complex, of type `Interior_mesh<GeomTraits>::C3T3`.
-/// \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
-/// that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
-/// degenerate face or two faces that cross, encloses no volume, if a size is not a positive finite
-/// number (or an angle or ratio is out of its range), if Mesh_3 reaches
-/// `maximum_number_of_vertices`, or if the complex has no cell.
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Meshes the inside of the closed triangle surface `surface` with tetrahedra (CGAL's Mesh_3 on a
+`Polyhedral_mesh_domain_with_features_3`, sharp edges protected) and returns the complex: its
+cells are positively oriented, its boundary vertices lie on `surface` (up to rounding) and,
+where `surface` has sharp edges, its boundary keeps them (a cube keeps its 8 corners and 12
+edges). The result is what `map_vertices()`, `star_shaped_to_unit_ball()`, `harmonic_map()`,
+`CGAL::compute_distortion()` and `CGAL::minimize_distortion()` take. `surface` is not modified;
+its orientation does not matter; several components (disjoint or nested, e.g. a hollow ball)
+are meshed as the volume they bound. Two runs with the same input give the same complex (the
+random generator of Mesh_3 is seeded, the optimizers have no time limit).
+
+Defaults. Without sizes, the criteria scale with the enclosed volume V and the area A of the
+surface: cell_size = facet_size = edge_size = max(cbrt(V / 6000), sqrt(A / 2400)),
+facet_distance = facet_size / 10, facet_angle = 25, cell_radius_edge_ratio = 3, and
+sharp_edge_angle = 60. This aims at about 3.10^4 tetrahedra (the volume term) with at most
+about 8.10^3 boundary facets (the area term, for thin shapes). On the 66 closed, 2-manifold,
+self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.10^5
+tetrahedra (median 2.7.10^4) in 0.1 to 6 s (median 0.4 s) on one core; the largest counts come
+from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
+with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
+(mpi_triang.off) stops at `maximum_number_of_vertices`. Sizes are in the units of the input, so
+a scaled input gives the scaled mesh. A size that is given also sets the defaults of the sizes
+derived from it: `cell_size(h)` alone makes facet_size = edge_size = h and facet_distance =
+h / 10.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` (e.g. `CGAL::Surface_mesh`)
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param surface a closed, 2-manifold triangle surface without self-intersections
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below. Mesh_3's optimizers are off by default: the optimizers of this package
+       start from the refined mesh, and they cost far more than it (sphere.off, 2.6.10^4
+       tetrahedra: refinement 0.13 s; ODT 10 iterations 2.4 s, Lloyd 10 iterations 3.7 s,
+       perturbation 0.6 s, exudation 2.4 s).
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `surface`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and a 3D point type (with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`)
+                   as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, surface)`}
+    \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+                    must be available in `TriangleMesh`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `surface` a unique index, which orders the
+                          vertices of the copy of the surface and names them in error messages}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+    \cgalParamExtra{The indices need not be contiguous (e.g. a `Surface_mesh` with removed elements).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `surface` a unique index, which names the faces
+                          in error messages}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{the kernel of the output: only its type is used}
+    \cgalParamType{a class model of `Kernel` with inexact constructions, as Mesh_3 requires}
+    \cgalParamDefault{`CGAL::Exact_predicates_inexact_constructions_kernel`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_size}
+    \cgalParamDescription{an upper bound on the circumradius of the tetrahedra (a length)
+                          (`Distortion_optimization::parameters::cell_size()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`max(cbrt(V / 6000), sqrt(A / 2400))`, V the volume enclosed by `surface` and A its area}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_radius_edge_ratio}
+    \cgalParamDescription{an upper bound on circumradius / shortest edge of the tetrahedra
+                          (`Distortion_optimization::parameters::cell_radius_edge_ratio()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`3`}
+    \cgalParamExtra{It must be finite and at least 2 (where Mesh_3 is proved to terminate).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{facet_size}
+    \cgalParamDescription{an upper bound on the radius of the surface Delaunay ball of a boundary facet (a length)
+                          (`Distortion_optimization::parameters::facet_size()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the cell size}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{facet_distance}
+    \cgalParamDescription{an upper bound on the distance from the circumcentre of a boundary facet to `surface`
+                          (a length) (`Distortion_optimization::parameters::facet_distance()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the facet size / 10}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{facet_angle}
+    \cgalParamDescription{a lower bound on the angles of the boundary facets, in degrees
+                          (`Distortion_optimization::parameters::facet_angle()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`25`}
+    \cgalParamExtra{It must be in (0, 30] (Mesh_3 is proved to terminate up to 30).}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{edge_size}
+    \cgalParamDescription{an upper bound on the size of the protecting balls (hence the edges) along the sharp edges
+                          (a length) (`Distortion_optimization::parameters::edge_size()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the facet size}
+    \cgalParamExtra{It must be positive and finite.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sharp_edge_angle}
+    \cgalParamDescription{an edge of `surface` is sharp, and kept as a polyline of the output, when the normals of its
+                          two faces make an angle larger than this, in degrees
+                          (`Distortion_optimization::parameters::sharp_edge_angle()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`60`}
+    \cgalParamExtra{It must be in (0, 180]; `180` keeps no edge.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{odt_iterations}
+    \cgalParamDescription{the number of iterations of Mesh_3's ODT smoothing (`CGAL::odt_optimize_mesh_3()`), run
+                          after the refinement; `0` skips it (`Distortion_optimization::parameters::odt_iterations()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`0`}
+    \cgalParamExtra{It must be non-negative. The smoothing stops earlier when it converges; it has no time limit.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{lloyd_iterations}
+    \cgalParamDescription{the number of iterations of Mesh_3's Lloyd smoothing (`CGAL::lloyd_optimize_mesh_3()`), run
+                          after ODT; `0` skips it (`Distortion_optimization::parameters::lloyd_iterations()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`0`}
+    \cgalParamExtra{It must be non-negative. It has no time limit.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{perturb_slivers}
+    \cgalParamDescription{if `true`, Mesh_3's sliver perturbation (`CGAL::perturb_mesh_3()`) runs after the smoothers
+                          (`Distortion_optimization::parameters::perturb_slivers()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{exude_slivers}
+    \cgalParamDescription{if `true`, Mesh_3's sliver exudation (`CGAL::exude_mesh_3()`) runs last
+                          (`Distortion_optimization::parameters::exude_slivers()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{maximum_number_of_vertices}
+    \cgalParamDescription{the number of vertices at which Mesh_3 stops and this function throws; `0` for no limit
+                          (`Distortion_optimization::parameters::maximum_number_of_vertices()`)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{10 times the number of vertices the sizes ask for,
+                      `V / (0.2 cell_size^3) / 5.5 + A / (0.3 facet_size^2) / 2` (at most 10^15)}
+    \cgalParamExtra{Mesh_3 checks it while refining, not while protecting the sharp edges.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the complex, of type `Interior_mesh<GeomTraits>::C3T3`.
+\throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
+that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
+degenerate face or two faces that cross, encloses no volume, if a size is not a positive finite
+number (or an angle or ratio is out of its range), if Mesh_3 reaches
+`maximum_number_of_vertices`, or if the complex has no cell.
+*/
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 typename Interior_mesh<internal::Interior_mesh_traits_of<NamedParameters>>::C3T3
 mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::parameters::default_values())

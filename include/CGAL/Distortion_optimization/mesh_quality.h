@@ -234,28 +234,161 @@ sharp_boundary_vertices(const C3T3& c3t3, const PositionMap& positions, double a
 \ingroup PkgDistortionOptimizationRef
 
 Improves the shapes of the cells of a mesh with its connectivity kept: the mesh at `positions` is
-taken as the image of a map whose source cells are regular simplices (each of its own start
-area or volume, with its start orientation), and the distortion of that map is minimized with
-`CGAL::minimize_distortion()`. With the default `Conformal_dilatation` (scale invariant) each cell
+taken as the image of a map whose source cells are regular simplices, and the distortion of that
+map is minimized with `CGAL::minimize_distortion()`. For a triangle mesh each ideal triangle has
+the area of the triangle at `positions`; for a complex each ideal tetrahedron has the volume of the
+cell in the triangulation (its points, which are also where the source tetrahedra are checked to be
+positive), so that `positions` may start away from the triangulation's points. All ideal cells
+have the orientation of the mesh as a whole (the sign of its total signed area for a triangle
+mesh, positive for a complex). With the default `Conformal_dilatation` (scale invariant) each cell
 is pulled towards the regular shape whatever its size; a measure that is not scale invariant
-(`Isometric_dilatation`, `Symmetric_dirichlet`) also keeps each cell near its start size. No cell
-that is valid at the start is ever inverted or flattened (exact predicates), so
+(`Isometric_dilatation`, `Symmetric_dirichlet`) also keeps each cell near the size of its ideal
+cell. No cell that is valid at the start is ever inverted or flattened (exact predicates), so
 `mesh_quality()`'s `inverted_cells` never grows.
 
 \tparam Mesh a triangle mesh (`FaceListGraph`, planar: `positions` gives `Point_2`) or a
         `CGAL::Mesh_complex_3_in_triangulation_3` (`positions` gives `Point_3`, keyed by
         `Vertex_handle`; only cells in the complex count)
+\tparam PositionMap a model of `ReadWritePropertyMap` from the vertex descriptors of a triangle mesh
+        to `Point_2`, or from `Mesh::Triangulation::Vertex_handle` to `Point_3`
+\tparam Measure a model of `DistortionMeasure`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
 \param mesh the mesh (its connectivity; not modified)
 \param positions the vertex positions: read as the start, written with the improved ones (free
        vertices only). For a `Surface_mesh<Point_2>`, `mesh.points()` improves it in place.
 \param measure the distortion measure of the map from the ideal cells
-\param np the named parameters of `CGAL::minimize_distortion()` except `vertex_point_map` (the
-       source is the ideal cells). By default the boundary vertices are fixed; with
-       `Distortion_optimization::parameters::sliding_boundary` (e.g.
-       `Triangle_surface::from_complex_boundary(c3t3, positions)`) they slide on that surface.
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below: those of `CGAL::minimize_distortion()` except `vertex_point_map`, which is
+       ignored (the source is the ideal cells). Vertex maps are keyed as `positions` is.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex: a constrained
+                          vertex keeps its position}
+    \cgalParamType{a class model of `ReadablePropertyMap` with the key type of `positions` and `bool` as value type}
+    \cgalParamDefault{the border vertices of a triangle mesh, the vertices on the boundary of a complex, are
+                      constrained; with `sliding_boundary`, no vertex is}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with the key type of `positions` and a number type
+                   convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_weighting}
+    \cgalParamDescription{the cell weights w(c, v) of the energy, with the ideal cells' volumes
+                          (`Distortion_optimization::parameters::cell_weighting()`)}
+    \cgalParamType{`Distortion_optimization::Cell_weighting`}
+    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of iterations}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`100`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{convergence_threshold}
+    \cgalParamDescription{as for `CGAL::minimize_distortion()`
+                          (`Distortion_optimization::parameters::convergence_threshold()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`1e-4`}
+    \cgalParamExtra{It must be non-negative.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{local_solver}
+    \cgalParamDescription{how one vertex's local problem is solved (`Distortion_optimization::parameters::local_solver()`)}
+    \cgalParamType{`Distortion_optimization::Local_solver`}
+    \cgalParamDefault{`Distortion_optimization::Local_solver::GRADIENT_DESCENT`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_order}
+    \cgalParamDescription{the order in which a one-thread sweep visits the free vertices
+                          (`Distortion_optimization::parameters::vertex_order()`)}
+    \cgalParamType{`Distortion_optimization::Vertex_order`}
+    \cgalParamDefault{`Distortion_optimization::Vertex_order::SORTED_PER_SWEEP`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{schedule}
+    \cgalParamDescription{what an iteration does (`Distortion_optimization::parameters::schedule()`)}
+    \cgalParamType{`Distortion_optimization::Schedule`}
+    \cgalParamDefault{`Distortion_optimization::Schedule::ALTERNATING`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{use_harmonic_start}
+    \cgalParamDescription{if `true`, the run starts from the harmonic map of the fixed vertices (from the ideal cells)
+                          when it is valid and better, or from the best safe point towards it
+                          (`Distortion_optimization::parameters::use_harmonic_start()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`, except with `Distortion_optimization::Schedule::LOCAL`: then `false`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{untangle_first}
+    \cgalParamDescription{if `true`, inverted start cells are first untangled as by `Distortion_optimization::untangle()`
+                          (`Distortion_optimization::parameters::untangle_first()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`: under a normalized measure an inverted or flat start cell is an error}
+    \cgalParamExtra{At most 1000 rounds, without the visitor. A flat triangle of a triangle mesh at `positions` is a
+                    degenerate source cell, an error even with this parameter.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{preserve_global_injectivity}
+    \cgalParamDescription{if `true`, with free boundary vertices, the boundary is kept from crossing itself
+                          (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads; `0` for all the hardware offers
+                          (`Distortion_optimization::parameters::number_of_threads()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{parallel_sweep}
+    \cgalParamDescription{how local sweeps are shared among threads (`Distortion_optimization::parameters::parallel_sweep()`)}
+    \cgalParamType{`Distortion_optimization::Parallel_sweep`}
+    \cgalParamDefault{`Distortion_optimization::Parallel_sweep::INDEPENDENT_SETS`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sliding_boundary}
+    \cgalParamDescription{a surface on which the boundary vertices that are not constrained slide
+                          (`Distortion_optimization::parameters::sliding_boundary()`), e.g.
+                          `Triangle_surface::from_complex_boundary(c3t3, positions)` with the vertices of
+                          `sharp_boundary_vertices()` constrained}
+    \cgalParamType{a model of `SlidingSurface` of the dimension of the mesh (2 for a triangle mesh, 3 for a complex)}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{for a triangle mesh, a \cgal Kernel deduced from the point type of `positions`, using
+                      `CGAL::Kernel_traits`; for a complex,
+                      `CGAL::Kernel_traits<Mesh::Triangulation::Geom_traits::Point_3>::Kernel`}
+    \cgalParamExtra{Its orientation predicates decide, on `double` coordinates, which cells are inverted.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{a callable called after each iteration with the mean energy; returning `false` stops the run}
+    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const`}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
 \returns the `Result` of the minimization: its energies are those of the map from the ideal cells
-\throws Invalid_input as `CGAL::minimize_distortion()`, e.g. for a flat or inverted start cell
-        under a normalized measure (`untangle_first(true)` repairs them first)
+\throws Invalid_input as `CGAL::minimize_distortion()`, e.g. for an inverted or flat start cell
+        under a normalized measure (`untangle_first(true)` repairs inverted ones first, and flat
+        tetrahedra of a complex), and for a flat triangle of a triangle mesh at `positions`
+        (a degenerate source triangle, whatever the named parameters)
 */
 template <class Mesh, class PositionMap, class Measure = Conformal_dilatation,
           class NamedParameters = CGAL::parameters::Default_named_parameters>

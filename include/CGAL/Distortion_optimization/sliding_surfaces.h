@@ -114,9 +114,27 @@ public:
     tree_->accelerate_distance_queries();
   }
 
-  /// The surface of the faces of a triangle mesh (a `FaceListGraph`); named parameter
-  /// `CGAL::parameters::vertex_point_map` (default `get(CGAL::vertex_point, tm)`), whose points
-  /// have `x()`, `y()`, `z()` convertible with `CGAL::to_double`.
+  /// The surface of the faces of a triangle mesh.
+  ///
+  /// \tparam TriangleMesh a model of `FaceListGraph`
+  /// \tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+  ///
+  /// \param tm the triangle mesh (copied; not modified)
+  /// \param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+  ///        ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+  ///                    as key type and a 3D point type (with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`)
+  ///                    as value type}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+  ///                     must be available in `TriangleMesh`.}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
   /// \throws Invalid_input as above, or for a face that is not a triangle.
   template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
   static Triangle_surface from_mesh(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())

@@ -37,23 +37,113 @@ a measure from the untangled map.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam TargetMap a model of `ReadWritePropertyMap` from vertex descriptors to a `Point_2`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
 \param tm the source mesh (not modified)
 \param target the map to untangle; written only on success (or when the visitor stops the run),
        and only for free vertices
-\param np the named parameters of `CGAL::minimize_distortion()` that define the problem and the
-  run (`vertex_point_map`, `vertex_is_constrained_map`, `vertex_weight_map`, `cell_weighting`,
-  `number_of_threads`, `preserve_global_injectivity`, `geom_traits`; the others are ignored), and:
-  - `CGAL::parameters::number_of_iterations`: the largest number of rounds (values of eps);
-    default 1000
-  - `CGAL::parameters::visitor`: a callable `bool(std::size_t round, double inverted_cells)`
-    called after each round; returning `false` stops the run and writes the map of that round
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below; the other named parameters of `CGAL::minimize_distortion()` are ignored
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating the source positions to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `%Point_2` or `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+                    must be available in `TriangleMesh`.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of `tm`:
+                          a constrained vertex never moves}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{the border vertices of `tm` are constrained; with `sliding_boundary`, no vertex is}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex, which weighs the cells of the
+                          barrier's energy as in `CGAL::minimize_distortion()`
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_weighting}
+    \cgalParamDescription{the cell weights w(c, v) of the barrier's energy
+                          (`Distortion_optimization::parameters::cell_weighting()`)}
+    \cgalParamType{`Distortion_optimization::Cell_weighting`}
+    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of rounds (values of eps) of each untangling attempt: the map is first
+                          untangled in growing neighbourhoods of its inverted cells, then as a whole if cells remain
+                          inverted (and, with `preserve_global_injectivity`, first without the boundary guard)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`1000`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{preserve_global_injectivity}
+    \cgalParamDescription{if `true`, a boundary that does not cross itself in the start map never starts to
+                          (exact predicates) (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself,
+                    `Distortion_optimization::Crossing_start_boundary` is thrown.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads; `0` for all the hardware offers
+                          (`Distortion_optimization::parameters::number_of_threads()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
+                    A negative value is an error.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sliding_boundary}
+    \cgalParamDescription{a surface on which the boundary vertices that are not constrained slide
+                          (`Distortion_optimization::parameters::sliding_boundary()`)}
+    \cgalParamType{a model of `SlidingSurface` in the plane (its `project()` is called with `std::array<double, 2>`),
+                   e.g. `Distortion_optimization::Sphere_surface` (a circle)}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type of the vertex point map, using `CGAL::Kernel_traits`}
+    \cgalParamExtra{Its `Orientation_2` decides, on `double` coordinates, the orientation of planar source triangles and
+                    which target triangles are inverted; its `Collinear_3` whether a surface source triangle is
+                    degenerate. Its points must be constructible from `double` coordinates.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{a callable called after each round with the number of the round in its attempt and the
+                          number of inverted or flat cells left in the part of the map being untangled;
+                          returning `false` stops the run and writes the map of that round}
+    \cgalParamType{a class with `bool operator()(std::size_t round, double inverted_cells) const` (the result may
+                   be any type convertible to `bool`)}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{The visitor is copied.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the numbers of inverted cells before and after, the rounds and the time
 
 \throws Distortion_optimization::Invalid_input, leaving `target` unchanged, for the input
-`CGAL::compute_distortion()` rejects, for an inverted cell whose vertices are all constrained, and
-when inverted cells remain after the rounds (the constraints may admit no injective map: e.g. a
-fixed boundary that crosses itself); the message gives the number of cells still inverted.
+`CGAL::compute_distortion()` rejects, non-positive or non-finite vertex weights, a negative number
+of threads, an inverted cell whose vertices are all constrained, and when inverted cells remain
+after the rounds (the constraints may admit no injective map: e.g. a fixed boundary that crosses
+itself); the message gives the number of cells still inverted.
+\throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
+`preserve_global_injectivity` when the boundary of the start map crosses itself.
 */
 template <class TriangleMesh, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::enable_if_t<!internal::Is_c3t3<TriangleMesh>::value, Untangle_result>
@@ -66,9 +156,110 @@ untangle(const TriangleMesh& tm, TargetMap target, const NamedParameters& np = C
 /*!
 \ingroup PkgDistortionOptimizationRef
 
-Untangles the map that sends each vertex of the cells of the complex `c3t3` to `get(target, v)`:
-as the triangle-mesh overload, for tetrahedra, with property maps keyed by `Vertex_handle`; by
-default the vertices on the complex boundary are constrained.
+Untangles the map that sends each vertex `v` of the cells of the complex `c3t3` from its position
+in the triangulation to `get(target, v)`: as the triangle-mesh overload, for tetrahedra (only the
+cells in the complex count).
+
+\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param c3t3 the source complex (not modified)
+\param target the map to untangle; written only on success (or when the visitor stops the run),
+       and only for free complex vertices
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below; `vertex_point_map` is not used (positions come from the triangulation), and
+       the other named parameters of `CGAL::minimize_distortion()` are ignored
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of the cells
+                          of `c3t3`: a constrained vertex never moves}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{the vertices on the boundary of the complex (on a facet between a cell of the complex and a
+                      cell outside it) are constrained; with `sliding_boundary`, no vertex is}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex, which weighs the cells of the
+                          barrier's energy as in `CGAL::minimize_distortion()`
+                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_weighting}
+    \cgalParamDescription{the cell weights w(c, v) of the barrier's energy
+                          (`Distortion_optimization::parameters::cell_weighting()`)}
+    \cgalParamType{`Distortion_optimization::Cell_weighting`}
+    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of rounds (values of eps) of each untangling attempt: the map is first
+                          untangled in growing neighbourhoods of its inverted cells, then as a whole if cells remain
+                          inverted (and, with `preserve_global_injectivity`, first without the boundary guard)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`1000`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{preserve_global_injectivity}
+    \cgalParamDescription{if `true`, a boundary that does not cross itself in the start map never starts to
+                          (exact predicates) (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself,
+                    `Distortion_optimization::Crossing_start_boundary` is thrown.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads; `0` for all the hardware offers
+                          (`Distortion_optimization::parameters::number_of_threads()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
+                    A negative value is an error.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{sliding_boundary}
+    \cgalParamDescription{a surface on which the boundary vertices that are not constrained slide
+                          (`Distortion_optimization::parameters::sliding_boundary()`)}
+    \cgalParamType{a model of `SlidingSurface` in space (its `project()` is called with `std::array<double, 3>`),
+                   e.g. `Distortion_optimization::Sphere_surface` or `Distortion_optimization::Triangle_surface`}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
+                      triangulation's points}
+    \cgalParamExtra{Its `Orientation_3` decides, on `double` coordinates, whether each source tetrahedron is positive
+                    and which target tetrahedra are inverted. Its `Point_3` must be constructible from three `double`s.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{a callable called after each round with the number of the round in its attempt and the
+                          number of inverted or flat cells left in the part of the map being untangled;
+                          returning `false` stops the run and writes the map of that round}
+    \cgalParamType{a class with `bool operator()(std::size_t round, double inverted_cells) const` (the result may
+                   be any type convertible to `bool`)}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{The visitor is copied.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the numbers of inverted cells before and after, the rounds and the time
+
+\throws Distortion_optimization::Invalid_input, leaving `target` unchanged, as the triangle-mesh
+overload, and for a complex with no cell or with a source tetrahedron that is not positively
+oriented.
+\throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
+`preserve_global_injectivity` when the boundary of the start map crosses itself.
 */
 template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::enable_if_t<internal::Is_c3t3<C3T3>::value, Untangle_result>

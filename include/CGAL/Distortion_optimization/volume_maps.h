@@ -15,6 +15,7 @@
 #include <CGAL/Distortion_optimization/internal/named_parameters.h>
 
 #include <CGAL/AABB_traits.h>
+#include <CGAL/Kernel/global_functions_3.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Named_function_parameters.h>
@@ -184,18 +185,73 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
   return inverted;
 }
 
-/// \ingroup PkgDistortionOptimizationRef
-/// Replaces the targets of the free vertices by the harmonic map: the minimizer of the Dirichlet
-/// energy sum_c w(c) |J_c|^2 for the targets of the fixed ones, with the cell weights w(c) of
-/// `CGAL::minimize_distortion()` (by default the volumes: the volume-weighted cotangent
-/// Laplacian), solved by incomplete-Cholesky conjugate gradients to a relative residual of 1e-10.
-/// The optimizer's harmonic start is the same solve. Named parameters: those of
-/// `CGAL::minimize_distortion()` that define the problem (`vertex_is_constrained_map`, keyed by
-/// `Vertex_handle`, default the complex boundary; `vertex_weight_map`; `cell_weighting`;
-/// `number_of_threads`). The result may invert cells where the boundary is not convex;
-/// `CGAL::compute_distortion()` tells.
-/// \throws Invalid_input if the harmonic map is not defined: some free vertex is connected to no
-/// fixed one (e.g. no vertex is fixed). `target` is then unchanged.
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Replaces the targets of the free vertices by the harmonic map: the minimizer of the Dirichlet
+energy sum_c w(c) |J_c|^2 for the targets of the fixed ones, with the cell weights w(c) of
+`CGAL::minimize_distortion()` (by default proportional to the volumes: the volume-weighted
+cotangent Laplacian), solved by incomplete-Cholesky conjugate gradients to a relative residual of
+1e-10. The optimizer's harmonic start is the same solve. The result may invert cells where the
+boundary is not convex; `CGAL::compute_distortion()` tells.
+
+\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param c3t3 the complex (not modified); only the cells in the complex count
+\param target the targets: read for the fixed vertices, written for the free ones
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below (those of `CGAL::minimize_distortion()` that define the problem)
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of the cells
+                          of `c3t3`: the constrained (fixed) vertices keep their target, the others are solved for}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{the vertices on the boundary of the complex (on a facet between a cell of the complex and a
+                      cell outside it) are constrained}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{vertex_weight_map}
+    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of the cells of `c3t3`,
+                          which enters the cell weights w(c) (`Distortion_optimization::parameters::vertex_weight_map()`)}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
+                   as key type and a number type convertible to `double` as value type}
+    \cgalParamDefault{omega(v) = 1 for every vertex}
+    \cgalParamExtra{Every weight must be finite and positive.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{cell_weighting}
+    \cgalParamDescription{the cell weights w(c, v) (`Distortion_optimization::parameters::cell_weighting()`)}
+    \cgalParamType{`Distortion_optimization::Cell_weighting`}
+    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads of the solve; `0` for all the hardware offers
+                          (`Distortion_optimization::parameters::number_of_threads()`)}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
+                    A negative value is an error.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
+                      triangulation's points}
+    \cgalParamExtra{Its `Orientation_3` checks, on `double` coordinates, that each source tetrahedron is positive.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws Invalid_input if the harmonic map is not defined: some free vertex is connected to no
+fixed one (e.g. no vertex is fixed); and for a complex with no cell, a source tetrahedron that is
+not positively oriented, a non-finite target coordinate, or a weight that is not finite and
+positive. `target` is then unchanged.
+*/
 template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void harmonic_map(const C3T3& c3t3, TargetMap target, const NamedParameters& np = CGAL::parameters::default_values())
 {

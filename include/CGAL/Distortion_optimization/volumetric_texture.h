@@ -56,7 +56,7 @@ enum snap_to_volume_t { snap_to_volume };
 namespace parameters {
 
 /// \ingroup PkgDistortionOptimizationRef
-/// `bool`, for `embed_in_volume()`: snap the points that lie outside the volume to its closest
+/// `bool`, for `embed_in_volume()` and `embed_surface_in_volume()`: snap the points that lie outside the volume to its closest
 /// point (on the boundary of the complex) instead of throwing `Points_outside_volume`; default
 /// `false`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(snap_to_volume_t, snap_to_volume)
@@ -378,12 +378,27 @@ private:
 /// boxes contain the point, found in a grid, are tested the same way. A point on a face, an edge
 /// or a vertex gets one of the cells that share it.
 ///
+/// \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+/// \tparam PointRange a model of `ConstRange` whose value type is a 3D point type (with `x()`, `y()`,
+///         `z()` convertible by `CGAL::to_double()`), e.g. `Point_3`
+/// \tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+///
 /// \param c3t3 the complex (not modified; the embedding refers to its cells)
 /// \param points a range of `Point_3`
-/// \param np optional named parameters among:
-///   - `Distortion_optimization::parameters::snap_to_volume`: `bool`; if `true`, a point in no
-///     cell is snapped to the closest point of the complex's boundary facets (found in an AABB
-///     tree), and listed in `Volume_embedding::snapped_points` with its distance; default `false`
+/// \param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+///        ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{snap_to_volume}
+///     \cgalParamDescription{if `true`, a point in no cell is snapped to the closest point of the complex's boundary
+///                           facets (found in an AABB tree), and listed in `Volume_embedding::snapped_points` with its
+///                           distance in `Volume_embedding::snap_distances`
+///                           (`Distortion_optimization::parameters::snap_to_volume()`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`: a point in no cell is an error}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \throws Points_outside_volume (an `Invalid_input`) for points in no cell of the complex,
 ///   without `snap_to_volume`; the message gives their number and the first indices
 /// \throws Invalid_input for a point with a non-finite coordinate or a complex with no cell
@@ -426,10 +441,39 @@ Volume_embedding<C3T3> embed_in_volume(const C3T3& c3t3, const PointRange& point
 }
 
 /// \ingroup PkgDistortionOptimizationRef
-/// `embed_in_volume()` of the vertices of the triangle mesh `tm` (any `FaceListGraph`), in the
-/// order of `vertices(tm)`: the embedding that `carry_surface()` and `carry_surface_vertices()`
-/// read. Named parameters: those of `embed_in_volume()` and `CGAL::parameters::vertex_point_map`
-/// (default `get(CGAL::vertex_point, tm)`).
+/// `embed_in_volume()` of the vertices of the triangle mesh `tm`, in the order of `vertices(tm)`:
+/// the embedding that `carry_surface()` and `carry_surface_vertices()` read.
+///
+/// \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+///
+/// \param c3t3 the complex (not modified; the embedding refers to its cells)
+/// \param tm the triangle mesh whose vertices are embedded (not modified)
+/// \param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+///        ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and a 3D point type (with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`)
+///                    as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+///                     must be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{snap_to_volume}
+///     \cgalParamDescription{if `true`, a vertex in no cell is snapped to the closest point of the complex's boundary
+///                           facets, as in `embed_in_volume()` (`Distortion_optimization::parameters::snap_to_volume()`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`: a vertex in no cell is an error}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Points_outside_volume (an `Invalid_input`), indices in the order of `vertices(tm)`, and
+///   Invalid_input as `embed_in_volume()`
 template <class C3T3, class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Volume_embedding<C3T3> embed_surface_in_volume(const C3T3& c3t3, const TriangleMesh& tm,
                                                const NamedParameters& np = CGAL::parameters::default_values())

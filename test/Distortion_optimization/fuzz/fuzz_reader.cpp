@@ -1,5 +1,5 @@
 // libFuzzer target for the package's mesh readers. Build one binary per format with
-// -DFUZZ_READER=read_OFF, read_OBJ or read_MEDIT (scripts/fuzz.sh does). Any input must either
+// -DFUZZ_READER=read_OFF, read_OBJ or read_MEDIT_soup (scripts/fuzz.sh does). Any input must either
 // parse into a consistent soup or raise Invalid_input: another exception, a crash, a hang or a
 // sanitizer report is a bug.
 
@@ -14,7 +14,7 @@
 #include <string>
 
 #ifndef FUZZ_READER
-#error "define FUZZ_READER as read_OFF, read_OBJ or read_MEDIT"
+#error "define FUZZ_READER as read_OFF, read_OBJ or read_MEDIT_soup"
 #endif
 
 namespace IO = CGAL::Distortion_optimization::IO;

@@ -12,6 +12,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
 #include <CGAL/Distortion_optimization/IO/simplex_soup.h>
+#include <CGAL/Distortion_optimization/IO/tetgen.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 
 #include <algorithm>
@@ -244,22 +245,24 @@ private:
 /// token that is not a number (a NUL byte or other garbage in it included), a non-finite
 /// coordinate, a vertex index out of range, a tetrahedron repeating a vertex, or anything after
 /// End.
-inline Tetrahedron_soup read_MEDIT(std::istream& in, const std::string& name = "MEDIT input")
+inline Tetrahedron_soup read_MEDIT_soup(std::istream& in, const std::string& name = "MEDIT input")
 {
   return internal::Medit_reader(in, name).read();
 }
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Reads a `.mesh` file with `read_MEDIT()`.
+/// Reads a `.mesh` file with `read_MEDIT_soup()`, or a TetGen pair (`.ele` or `.node`, the other one
+/// beside it) with `read_TetGen()`.
 /// \throws Invalid_input if the file cannot be opened, has another extension, is malformed or has
 /// no tetrahedron.
 inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
 {
   const std::string shown = internal::printable(path);
-  if(internal::extension(path) != "mesh") throw Invalid_input(shown + ": unsupported extension (use .mesh)");
+  if(internal::extension(path) == "ele" || internal::extension(path) == "node") return read_TetGen(path);
+  if(internal::extension(path) != "mesh") throw Invalid_input(shown + ": unsupported extension (use .mesh, or TetGen's .ele/.node)");
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Invalid_input(shown + ": cannot open the file");
-  Tetrahedron_soup soup = read_MEDIT(in, path);
+  Tetrahedron_soup soup = read_MEDIT_soup(in, path);
   if(soup.cells.empty()) throw Invalid_input(shown + ": no tetrahedron");
   return soup;
 }
@@ -267,12 +270,12 @@ inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
 /// \ingroup PkgDistortionOptimizationIO
 /// Writes `soup` as an ASCII Medit file (MeshVersionFormatted 1, Dimension 3, Vertices with
 /// reference 0, Tetrahedra with `soup.labels` as references, or 1 for all when `labels` is empty,
-/// End), atomically, with 17 significant digits so that `read_MEDIT()` gives back the same
+/// End), atomically, with 17 significant digits so that `read_MEDIT_soup()` gives back the same
 /// doubles.
 /// \throws Invalid_input (before anything is written) if `labels` is neither empty nor one per
 /// tetrahedron, a coordinate is not finite, or a tetrahedron has an index out of range or repeats
-/// a vertex, i.e. whenever `read_MEDIT()` would reject the file; or if the file cannot be written.
-inline void write_MEDIT(const std::string& path, const Tetrahedron_soup& soup)
+/// a vertex, i.e. whenever `read_MEDIT_soup()` would reject the file; or if the file cannot be written.
+inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& soup)
 {
   if(!soup.labels.empty() && soup.labels.size() != soup.cells.size())
     throw Invalid_input(path + ": " + std::to_string(soup.labels.size()) + " labels for " +

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Strict readers and atomic writers of triangle meshes in OFF and OBJ, keeping vertex and face
-// order exactly as in the file (source/target pairs are matched by index). Anything a reader does
+// Strict readers and atomic writers of triangle meshes in OFF and OBJ (and PLY, STL and GOCAD
+// read through CGAL's readers, then checked as strictly), keeping vertex and face order exactly as
+// in the file (source/target pairs are matched by index). Anything a reader does
 // not understand is an error naming the file and line, never a silent guess.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_TRIANGLE_SOUP_H
@@ -12,6 +13,11 @@
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
 #include <CGAL/Distortion_optimization/IO/simplex_soup.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
+
+#include <CGAL/IO/GOCAD.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <array>
 #include <algorithm>
@@ -53,21 +59,36 @@ inline bool is_obj_statement(const std::string& keyword)
   return std::find(std::begin(statements), std::end(statements), keyword) != std::end(statements);
 }
 
-// The vertex index of an OBJ face reference "i", "i/t", "i//n" or "i/t/n" (texture and normal
-// indices checked to be integers, not kept).
-inline long long obj_vertex_reference(const Line_reader& reader, const std::string& ref)
+// The vertex and texture indices of an OBJ face reference "i", "i/t", "i//n" or "i/t/n" (as
+// written, 0 for no texture; the normal index is checked to be an integer, not kept).
+inline std::array<long long, 2> obj_vertex_reference(const Line_reader& reader, const std::string& ref)
 {
   std::size_t begin = 0;
-  long long vertex = 0;
+  std::array<long long, 2> indices = {0, 0};
   for(int part = 0; part < 3; ++part) {
     const std::size_t slash = ref.find('/', begin);
     const std::string value = ref.substr(begin, slash == std::string::npos ? std::string::npos : slash - begin);
-    if(part == 0) vertex = reader.integer(value);
-    else if(!value.empty() || slash == std::string::npos) reader.integer(value); // "i/" is malformed, "i//n" is not
-    if(slash == std::string::npos) return vertex;
+    if(part == 0) indices[0] = reader.integer(value);
+    else if(!value.empty() || slash == std::string::npos) {   // "i/" is malformed, "i//n" is not
+      const long long index = reader.integer(value);
+      if(part == 1) {
+        if(index == 0) reader.fail("face vertex '" + ref + "' has texture index 0 (OBJ counts from 1)");
+        indices[1] = index;
+      }
+    }
+    if(slash == std::string::npos) return indices;
     begin = slash + 1;
   }
   reader.fail("face vertex '" + ref + "' has more than three parts");
+}
+
+// An OBJ index (1-based, or negative relative to the `count` items so far) made 0-based;
+// -1 when out of range.
+inline long long obj_index(long long index, std::size_t count)
+{
+  const long long n = static_cast<long long>(count);
+  index = index < 0 ? n + index : index - 1;
+  return index >= 0 && index < n ? index : -1;
 }
 
 } // namespace internal
@@ -129,9 +150,10 @@ inline Triangle_soup read_OFF(std::istream& in, const std::string& name = "OFF i
 }
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Reads the vertices ("v x y z [...]", the optional values being numbers such as w or a color)
-/// and faces ("f a b c", with a/b/c possibly "i/t/n", 1-based or negative relative indices) of an
-/// OBJ file; the other statements of the format are skipped. A UTF-8 byte order mark is skipped.
+/// Reads the vertices ("v x y z [...]", the optional values being numbers such as w or a color),
+/// texture coordinates ("vt u v [w]") and faces ("f a b c", with a/b/c possibly "i/t/n", 1-based or
+/// negative relative indices) of an OBJ file; the other statements of the format are skipped. A
+/// UTF-8 byte order mark is skipped.
 /// \throws Invalid_input naming the line, as `read_OFF()`, and for a line that is not an OBJ
 /// statement.
 inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ input")
@@ -144,19 +166,33 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
       if(t.size() < 4) reader.fail("vertex with fewer than 3 coordinates");
       soup.points.push_back({reader.coordinate(t[1]), reader.coordinate(t[2]), reader.coordinate(t[3])});
       reader.check_numbers(t, 4);
+    } else if(t[0] == "vt") {
+      if(t.size() < 3) reader.fail("texture coordinate with fewer than 2 values");
+      soup.texture_coordinates.push_back({reader.coordinate(t[1]), reader.coordinate(t[2])});
+      reader.check_numbers(t, 3);
     } else if(t[0] == "f") {
       const std::size_t f = soup.cells.size();
       if(t.size() != 4) reader.fail("face " + std::to_string(f) + " is not a triangle (" + std::to_string(t.size() - 1) + " vertices)");
-      std::array<std::size_t, 3> tri;
+      constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+      std::array<std::size_t, 3> tri, tex = {none, none, none};
+      bool textured = false;
       for(int i = 0; i < 3; ++i) {
-        long long index = internal::obj_vertex_reference(reader, t[1 + i]);
-        const long long count = static_cast<long long>(soup.points.size());
-        index = index < 0 ? count + index : index - 1;
-        if(index < 0 || index >= count) reader.fail("face " + std::to_string(f) + " has vertex index " + t[1 + i] + " out of range");
+        const std::array<long long, 2> ref = internal::obj_vertex_reference(reader, t[1 + i]);
+        const long long index = internal::obj_index(ref[0], soup.points.size());
+        if(index < 0) reader.fail("face " + std::to_string(f) + " has vertex index " + t[1 + i] + " out of range");
         tri[i] = static_cast<std::size_t>(index);
+        if(ref[1] != 0) {
+          const long long texture = internal::obj_index(ref[1], soup.texture_coordinates.size());
+          if(texture < 0) reader.fail("face " + std::to_string(f) + " has texture index " + t[1 + i] + " out of range");
+          tex[i] = static_cast<std::size_t>(texture);
+          textured = true;
+        }
       }
       internal::check_triangle(reader, tri, f);
       soup.cells.push_back(tri);
+      // Texture indices for every face once one has some (none where a face has none).
+      if(textured && soup.cell_texture_indices.size() < f) soup.cell_texture_indices.assign(f, {none, none, none});
+      if(textured || !soup.cell_texture_indices.empty()) soup.cell_texture_indices.push_back(tex);
     } else if(!internal::is_obj_statement(t[0])) {
       reader.fail("'" + t[0] + "' is not an OBJ statement");
     }
@@ -165,25 +201,112 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
 }
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Reads an `.off` or `.obj` file (by its extension).
-/// \throws Invalid_input if the file cannot be opened, has another extension, or is malformed.
+/// One (u, v) per vertex from the texture coordinates of an OBJ soup: a parametrization stored as
+/// UVs. Empty if the faces refer to no texture coordinates. `name` is used in error messages.
+/// \throws Invalid_input if some face vertices have no texture index while others have, if a
+/// vertex has two different texture coordinates (a seam: the map needs one per vertex, so the
+/// mesh must be cut there) or if a vertex is in no face.
+inline std::vector<std::array<double, 2>> per_vertex_texture_coordinates(const Triangle_soup& soup, const std::string& name)
+{
+  if(soup.cell_texture_indices.empty()) return {};
+  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> index(soup.points.size(), none);
+  for(std::size_t f = 0; f < soup.cells.size(); ++f)
+    for(int i = 0; i < 3; ++i) {
+      std::size_t& mine = index[soup.cells[f][i]];
+      const std::size_t t = soup.cell_texture_indices[f][i];
+      if(t == none)
+        throw Invalid_input(internal::printable(name) + ": face " + std::to_string(f) +
+                            ": some face vertices have texture indices and others not");
+      if(mine != none && soup.texture_coordinates[mine] != soup.texture_coordinates[t])
+        throw Invalid_input(internal::printable(name) + ": vertex " + std::to_string(soup.cells[f][i]) +
+                            " has two texture coordinates (a seam); one (u, v) per vertex is needed");
+      mine = t;
+    }
+  std::vector<std::array<double, 2>> uv(index.size());
+  for(std::size_t v = 0; v < index.size(); ++v) {
+    if(index[v] == none) throw Invalid_input(internal::printable(name) + ": vertex " + std::to_string(v) + " is in no face");
+    uv[v] = soup.texture_coordinates[index[v]];
+  }
+  return uv;
+}
+
+namespace internal {
+
+// PLY, STL and GOCAD through CGAL's polygon soup readers, which keep the file's vertex and face
+// order (read_polygon_mesh may repair and reorder, and source/target pairs are matched by index),
+// then the checks the package's own readers make as they parse.
+inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& e)
+{
+  using Point = CGAL::Simple_cartesian<double>::Point_3;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  const std::string shown = printable(path);
+  bool ok = false;
+  try {
+    ok = e == "ply" ? CGAL::IO::read_PLY(path, points, faces)
+       : e == "stl" ? CGAL::IO::read_STL(path, points, faces)
+                    : CGAL::IO::read_GOCAD(path, points, faces);
+  } catch(const std::exception& x) {
+    throw Invalid_input(shown + ": " + x.what());
+  }
+  std::string format = e;
+  for(char& c : format) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if(!ok) throw Invalid_input(shown + ": CGAL's " + format + " reader could not read the file");
+  Triangle_soup soup;
+  for(std::size_t v = 0; v < points.size(); ++v) {
+    const Point& p = points[v];
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Invalid_input(shown + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+    soup.points.push_back({p.x(), p.y(), p.z()});
+  }
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const std::vector<std::size_t>& face = faces[f];
+    if(face.size() != 3)
+      throw Invalid_input(shown + ": face " + std::to_string(f) + " is not a triangle (" + std::to_string(face.size()) + " vertices)");
+    for(std::size_t i : face)
+      if(i >= points.size())
+        throw Invalid_input(shown + ": face " + std::to_string(f) + " has vertex index " + std::to_string(i) + " out of range");
+    if(face[0] == face[1] || face[1] == face[2] || face[0] == face[2])
+      throw Invalid_input(shown + ": face " + std::to_string(f) + " repeats a vertex");
+    soup.cells.push_back({face[0], face[1], face[2]});
+  }
+  return soup;
+}
+
+} // namespace internal
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Reads a triangle mesh by the extension of `path`: `.off` and `.obj` with the package's own
+/// strict readers `read_OFF()` and `read_OBJ()`; `.ply`, `.stl` and `.ts` (GOCAD) with CGAL's
+/// `CGAL::IO::read_PLY()`, `read_STL()` and `read_GOCAD()` (ASCII or binary), which keep the order
+/// of vertices and faces, followed by the same checks: finite coordinates, triangles only, indices
+/// in range, no face repeating a vertex. (An STL file lists each triangle's corners: CGAL's reader
+/// merges equal points into one vertex.)
+/// \throws Invalid_input if the file cannot be opened, has another extension, is malformed or has
+/// no triangle.
 inline Triangle_soup read_triangle_soup(const std::string& path)
 {
   const std::string e = internal::extension(path);
-  if(e != "off" && e != "obj") throw Invalid_input(internal::printable(path) + ": unsupported extension (use .off or .obj)");
+  if(e != "off" && e != "obj" && e != "ply" && e != "stl" && e != "ts")
+    throw Invalid_input(internal::printable(path) + ": unsupported extension (use .off, .obj, .ply, .stl or .ts)");
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Invalid_input(internal::printable(path) + ": cannot open the file");
-  Triangle_soup soup = e == "off" ? read_OFF(in, path) : read_OBJ(in, path);
+  Triangle_soup soup = e == "off" ? read_OFF(in, path) : e == "obj" ? read_OBJ(in, path) : internal::read_with_CGAL(path, e);
   if(soup.cells.empty()) throw Invalid_input(internal::printable(path) + ": no triangle");
   return soup;
 }
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Writes a triangle soup as `.off` or `.obj` (by the extension of `path`), atomically.
+/// Writes a triangle soup as `.off` or `.obj` (by the extension of `path`), atomically; in an OBJ
+/// file, with its texture coordinates and faces "f a/ta b/tb c/tc" when it has cell texture indices.
+/// \throws Invalid_input for another extension, or texture coordinates to write as OFF.
 inline void write_triangle_soup(const std::string& path, const Triangle_soup& soup)
 {
   const std::string e = internal::extension(path);
   if(e != "off" && e != "obj") throw Invalid_input(path + ": unsupported extension (use .off or .obj)");
+  const bool textured = !soup.cell_texture_indices.empty();
+  if(textured && e == "off") throw Invalid_input(path + ": OFF has no texture coordinates (use .obj)");
   write_file_atomically(path, [&](std::ostream& out) {
     if(e == "off") {
       out << "OFF\n" << soup.points.size() << ' ' << soup.cells.size() << " 0\n";
@@ -191,7 +314,16 @@ inline void write_triangle_soup(const std::string& path, const Triangle_soup& so
       for(const auto& t : soup.cells) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
     } else {
       for(const auto& p : soup.points) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-      for(const auto& t : soup.cells) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+      if(textured)
+        for(const auto& uv : soup.texture_coordinates) out << "vt " << uv[0] << ' ' << uv[1] << '\n';
+      for(std::size_t f = 0; f < soup.cells.size(); ++f) {
+        out << 'f';
+        for(int i = 0; i < 3; ++i) {
+          out << ' ' << soup.cells[f][i] + 1;
+          if(textured) out << '/' << soup.cell_texture_indices[f][i] + 1;
+        }
+        out << '\n';
+      }
     }
   });
 }

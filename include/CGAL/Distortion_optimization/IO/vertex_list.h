@@ -51,6 +51,39 @@ inline std::vector<unsigned char> read_vertex_list(const std::string& path, std:
   return read_vertex_list(in, count, path);
 }
 
+/// \ingroup PkgDistortionOptimizationIO
+/// Reads one weight per vertex of a mesh with `count` vertices (the paper's omega(v) of eq. 23,
+/// for the named parameter `vertex_weight_map`): one positive finite number per line, in vertex
+/// order, `#` starting a comment, blank lines skipped. `name` is used in error messages.
+/// \throws Invalid_input naming the line for a token that is not a number, two tokens on a line,
+/// a weight that is not positive and finite, or a number of weights other than `count`.
+inline std::vector<double> read_vertex_weights(std::istream& in, std::size_t count, const std::string& name = "vertex weights")
+{
+  internal::Line_reader reader(in, name);
+  std::vector<double> weights;
+  std::vector<std::string> t;
+  while(reader.next(t)) {
+    if(t.size() > 1) reader.fail("one weight per line");
+    if(weights.size() == count) reader.fail("more weights than the " + std::to_string(count) + " vertices");
+    const double w = reader.coordinate(t[0]);
+    if(!(w > 0)) reader.fail("weight " + t[0] + " is not positive");
+    weights.push_back(w);
+  }
+  if(weights.size() != count)
+    reader.fail(std::to_string(weights.size()) + " weights for " + std::to_string(count) + " vertices");
+  return weights;
+}
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Reads the vertex weights in the file `path` (see the stream overload).
+/// \throws Invalid_input if the file cannot be opened, and as the stream overload.
+inline std::vector<double> read_vertex_weights(const std::string& path, std::size_t count)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in) throw Invalid_input(internal::printable(path) + ": cannot open the file of vertex weights");
+  return read_vertex_weights(in, count, path);
+}
+
 } // namespace IO
 } // namespace Distortion_optimization
 } // namespace CGAL
