@@ -1,4 +1,4 @@
-// The demo: a planar grid whose interior is mapped with noise (the border is fixed); for every
+// All the measures on one map: a planar grid whose interior is mapped with noise (the border is fixed); for every
 // measure of the package, minimizes the distortion from that start and prints before / after.
 
 #include <CGAL/compute_distortion.h>
