@@ -78,7 +78,8 @@ run "blobby -> ball, SD, sliding" "$OUT/blobby_ball.json" --source "$DATA/blobby
 
 echo "== 6. the cube's Mesh_3 mesh, quality improved (ideal tetrahedra, K, boundary sliding)"
 run "cube Mesh_3 mesh quality (ideal tets, K)" "$OUT/cube_quality.json" --source "$OUT/cube_mesh3.mesh" \
-  --reference ideal --boundary slide --measure conformal --output "$OUT/cube_improved.mesh"
+  --reference ideal --boundary slide --measure conformal --output "$OUT/cube_improved.mesh" \
+  --svg "$OUT/cube_quality.svg" --svg-both
 q=$OUT/cube_quality.json
 printf '   min dihedral %.1f -> %.1f degrees, slivers (< 10 degrees) %s -> %s, mean radius ratio %.3f -> %.3f\n' \
   "$(field "$q" min_dihedral_before)" "$(field "$q" min_dihedral_after)" "$(field "$q" slivers_before)" \

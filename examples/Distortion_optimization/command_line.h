@@ -68,7 +68,8 @@ std::string usage()
   "  --flat-output  a triangle map's result as a flat mesh (u, v, 0) too (.off or .obj)\n"
   "  --svg        a picture of the result, each cell coloured by its distortion (viridis; red:\n"
   "               inverted): a triangle map's target, or the section of a tetrahedral map's\n"
-  "               target by the plane z = middle; --svg-both draws the source beside it\n"
+  "               target by the plane z = middle; --svg-both draws the source beside it; with\n"
+  "               --reference ideal each cell's radius ratio, after (and before)\n"
   "  --energy-plot  the energy of the start and after each iteration, as an SVG plot\n"
   "  --start      volume mode: the inside of CLOSED (a closed OFF/OBJ surface, meshed with\n"
   "               CGAL Mesh_3, or a .mesh) is mapped onto the unit ball (ball: star-shaped\n"
@@ -366,8 +367,6 @@ Command_line parse(int argc, char** argv)
     if(!picture->empty() && DO::IO::internal::extension(*picture) != "svg")
       throw Usage_error("--svg and --energy-plot must end in .svg");
   if(c.svg_both && c.svg.empty()) throw Usage_error("--svg-both needs --svg");
-  if(!c.svg.empty() && c.ideal())
-    throw Usage_error("--svg draws a map's distortion: not with --reference ideal (write a .vtu of the mesh instead)");
   if(c.carry.empty() != c.carry_output.empty()) throw Usage_error("--carry and --carry-output go together");
   if(!c.carry.empty() && !tetrahedra) throw Usage_error("--carry needs a tetrahedral map (--start, or a .mesh source)");
   if(c.snap && c.carry.empty()) throw Usage_error("--snap needs --carry");

@@ -237,16 +237,16 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
   for(const auto& [name, value] : fields) std::printf("%-21s %s\n", name.c_str(), value.c_str());
 }
 
-// --svg (the map's cells coloured by distortion, beside the source's with --svg-both) and
+// --svg (the map's cells coloured by `value_name`, beside the source's with --svg-both) and
 // --energy-plot (the start's energy, then each iteration's).
-void write_pictures(const Command_line& c, DO::IO::Svg_panel source, DO::IO::Svg_panel map, const std::string& measure_name,
-                    const DO::Result& r)
+void write_pictures(const Command_line& c, DO::IO::Svg_panel source, DO::IO::Svg_panel map, const std::string& value_name,
+                    const std::string& measure_name, const DO::Result& r)
 {
   if(!c.svg.empty()) {
     std::vector<DO::IO::Svg_panel> panels;
     if(c.svg_both) panels.push_back(std::move(source));
     panels.push_back(std::move(map));
-    DO::IO::write_SVG(c.svg, panels, measure_name);
+    DO::IO::write_SVG(c.svg, panels, value_name);
   }
   if(!c.energy_plot.empty()) {
     std::vector<double> energies = {r.initial_energy};
@@ -399,12 +399,18 @@ int run_triangles(const Command_line& c)
     DO::IO::write_triangle_soup(c.output, output);
   }
   if(!c.svg.empty()) {
+    // A map's distortion, or with --reference ideal the quality of the mesh before and after.
     std::vector<std::array<double, 3>> points;
     for(Vertex v : mesh.vertices()) points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
-    write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, face_values()),
-                   DO::IO::triangle_panel("map", output.points, output.cells, face_values()), measure_name, r);
+    if(c.ideal())
+      write_pictures(c, DO::IO::triangle_panel("before", points, output.cells, DO::radius_ratios(points, output.cells)),
+                     DO::IO::triangle_panel("after", output.points, output.cells, DO::radius_ratios(output.points, output.cells)),
+                     "radius ratio", measure_name, r);
+    else
+      write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, face_values()),
+                     DO::IO::triangle_panel("map", output.points, output.cells, face_values()), measure_name, measure_name, r);
   } else {
-    write_pictures(c, {}, {}, measure_name, r);
+    write_pictures(c, {}, {}, measure_name, measure_name, r);
   }
   report(c, cells, vertices, measure_name, r, fields);
   return 0;
@@ -571,7 +577,7 @@ int run_tetrahedra(const Command_line& c)
       output.points[i] = target.points[i];
     }
   std::vector<double> values;   // each source cell's distortion, for pictures
-  if(DO::IO::internal::extension(c.output) == "vtu" || !c.svg.empty()) {
+  if(DO::IO::internal::extension(c.output) == "vtu" || (!c.svg.empty() && !c.ideal())) {
     std::unordered_map<Tr::Cell_handle, double> per_cell;
     DO::with_measure(c.measure, [&](const auto& measure) {
       return CGAL::compute_distortion(c3t3, target_map, measure,
@@ -594,11 +600,17 @@ int run_tetrahedra(const Command_line& c)
     DO::IO::write_MEDIT_soup(c.output, output);
   }
   if(!c.mesh_output.empty()) DO::IO::write_MEDIT_soup(c.mesh_output, source);
-  if(!c.svg.empty())
-    write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, values),
-                   DO::IO::cross_section_panel("map, section z = middle", output.points, output.cells, values), measure_name, r);
+  if(c.svg.empty())
+    write_pictures(c, {}, {}, measure_name, measure_name, r);
+  else if(c.ideal())   // the quality of the mesh before and after
+    write_pictures(c, DO::IO::cross_section_panel("before, section z = middle", source.points, source.cells,
+                                                  DO::radius_ratios(source.points, source.cells)),
+                   DO::IO::cross_section_panel("after, section z = middle", output.points, output.cells,
+                                               DO::radius_ratios(output.points, output.cells)), "radius ratio", measure_name, r);
   else
-    write_pictures(c, {}, {}, measure_name, r);
+    write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, values),
+                   DO::IO::cross_section_panel("map, section z = middle", output.points, output.cells, values),
+                   measure_name, measure_name, r);
   std::vector<std::pair<std::string, std::string>> fields;
   if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(c3t3, target_map));
   if(c.volume_mode() || carried) {

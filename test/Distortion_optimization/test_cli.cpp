@@ -868,8 +868,15 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
   const std::string unused = temp("ideal_unused.off"), planar = temp("ideal_planar.off"), o = temp("ideal_out.off"),
                     r = temp("ideal.json");
   write_planar_pair(unused, planar, 0.03);   // the perturbed grid is the mesh to improve
-  Tool_run result = run("--source " + planar + " --reference ideal --output " + o + " --report " + r);
+  const std::string picture = temp("ideal_quality.svg");
+  Tool_run result = run("--source " + planar + " --reference ideal --output " + o + " --report " + r + " --svg " + picture +
+                        " --svg-both");
   ASSERT_EQ(result.status, 0) << result.output;
+  // The picture: the radius ratio of each triangle, before and after.
+  const std::string svg = slurp(picture);
+  EXPECT_EQ(occurrences(svg, "<polygon"), 2 * 288u);
+  EXPECT_NE(svg.find(">radius ratio per cell, "), std::string::npos);
+  EXPECT_NE(svg.find(">after</text>"), std::string::npos);
   const IO::Triangle_soup before = IO::read_triangle_soup(planar), after = IO::read_triangle_soup(o);
   EXPECT_EQ(before.cells, after.cells);
   for(std::size_t v = 0; v < before.points.size(); ++v) {

@@ -10,7 +10,7 @@ command -v rsvg-convert > /dev/null || { echo "make_figures: rsvg-convert not fo
 bash scripts/demo.sh --no-build
 DEMO=${DEMO_BUILD_DIR:-build}/demo
 FIG=doc/Distortion_optimization/fig
-for name in cube_radial cube_radial_energy lion-head_fixed_energy cube_ball; do
+for name in cube_radial cube_radial_energy lion-head_fixed_energy cube_ball cube_quality; do
   cp "$DEMO/$name.svg" "$FIG/$name.svg"
 done
 for name in lion-head_fixed lion-head_arap lion-head_optimized; do

@@ -197,6 +197,30 @@ Mesh_quality mesh_quality(const Mesh& mesh, const PositionMap& positions)
 }
 
 /// \ingroup PkgDistortionOptimizationRef
+/// The radius ratio \f$ n r / R \f$ of each cell of a soup (`N = 3`: triangles, `N = 4`:
+/// tetrahedra; inradius over circumradius, 1 for the regular simplex, 0 for a flat cell), as
+/// `mesh_quality()` measures it, e.g. to draw a mesh's quality with `IO::write_SVG()`.
+/// \pre every index of `cells` is smaller than `points.size()`.
+template <std::size_t N>
+std::vector<double> radius_ratios(const std::vector<std::array<double, 3>>& points,
+                                  const std::vector<std::array<std::size_t, N>>& cells)
+{
+  static_assert(N == 3 || N == 4, "radius_ratios takes triangles or tetrahedra");
+  std::vector<double> ratios;
+  ratios.reserve(cells.size());
+  for(const auto& c : cells) {
+    std::array<internal::Vector<3>, N> p;
+    for(std::size_t i = 0; i < N; ++i) p[i] = internal::Vector<3>(points[c[i]][0], points[c[i]][1], points[c[i]][2]);
+    std::array<double, 6> angles;
+    int count;
+    double ratio;
+    internal::cell_shape(p, angles, count, ratio);
+    ratios.push_back(ratio);
+  }
+  return ratios;
+}
+
+/// \ingroup PkgDistortionOptimizationRef
 /// The vertices of the complex's boundary on a sharp edge at `positions`: an edge whose two
 /// boundary facets have normals more than `angle` degrees apart (as `mesh_interior()`'s
 /// `sharp_edge_angle`), corners included. With the boundary sliding in `improve_mesh_quality()`,
