@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds everything (library checks, tests, examples, benchmarks) in Release in build/ and runs
-# the whole test suite. Works from any directory; the exit code is ctest's.
+# Builds everything (library checks, tests, examples, benchmarks) in Release in build/, the
+# manual with Doxygen (build/doc/html), and runs the whole test suite. Works from any directory;
+# the exit code is ctest's (or the build's, or Doxygen's on a warning).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -8,4 +9,6 @@ bash scripts/install_dependencies.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release \
   -DBUILD_TESTING=ON -DBUILD_EXAMPLES=ON -DBUILD_BENCHMARKS=ON
 cmake --build build -j2
+# The manual and reference (Doxygen, into build/doc/html): a warning is an error (Doxyfile).
+(cd doc/Distortion_optimization && doxygen Doxyfile)
 ctest --test-dir build --output-on-failure

@@ -128,6 +128,9 @@ refines both with the same stencils and rebuilds the mesh once per level.
        removed elements (otherwise they are renumbered in iteration order), the new vertices
        follow, one per edge; its faces and edges are renumbered, and their properties dropped
 \param target the target of each vertex, written for every vertex of the refined mesh
+\param levels the number of refinements (each multiplies the triangles by four; 0 leaves the map
+       as it is)
+\param scheme `Subdivision_scheme::LINEAR` (the default) or `Subdivision_scheme::LOOP`, as above
 \throws Invalid_input if a face is not a triangle
 */
 template <class Point, class TargetMap>
