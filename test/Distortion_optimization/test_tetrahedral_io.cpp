@@ -448,6 +448,28 @@ TEST(Vtu, PointArraysOfVectors)
   }
 }
 
+// Whether `xml` is one element whose tags nest (start, end and empty tags; no text checks): enough
+// to catch a writer that forgets to close what it opened.
+bool tags_nest(const std::string& xml)
+{
+  std::vector<std::string> open;
+  std::size_t roots = 0;
+  for(std::size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
+    const std::size_t end = xml.find('>', at);
+    if(end == std::string::npos) return false;
+    const std::string tag = xml.substr(at + 1, end - at - 1);
+    if(tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
+    if(tag[0] == '/') {
+      if(open.empty() || open.back() != tag.substr(1)) return false;
+      open.pop_back();
+      continue;
+    }
+    if(open.empty()) ++roots;
+    if(tag.back() != '/') open.push_back(tag.substr(0, tag.find_first_of(" \t\n")));
+  }
+  return open.empty() && roots == 1;
+}
+
 // The section of a 3 x 3 x 3 block of cubes (six tetrahedra each) by z = 1.5 covers the 3 x 3
 // square once: its polygons' areas add up to 9, each is convex and counter-clockwise.
 TEST(Svg, CrossSectionsCoverTheSectionAndPicturesCountTheirCells)
@@ -479,6 +501,8 @@ TEST(Svg, CrossSectionsCoverTheSectionAndPicturesCountTheirCells)
   const std::string path = temp("section.svg");
   IO::write_SVG(path, {section, side}, "K");
   const std::string svg = contents(path);
+  EXPECT_TRUE(tags_nest(svg));
+  EXPECT_FALSE(tags_nest("<svg><g><polygon/></svg>"));   // the checker itself
   EXPECT_EQ(occurrences(svg, "<polygon"), section.polygons.size() + 1);
   EXPECT_EQ(occurrences(svg, "fill=\"#d62728\"/>"), 1u);   // the infinite value, in red
   EXPECT_NE(svg.find(">K per cell, linear scale</text>"), std::string::npos);
@@ -490,8 +514,12 @@ TEST(Svg, CrossSectionsCoverTheSectionAndPicturesCountTheirCells)
     EXPECT_FALSE(exists(path));
   }
   EXPECT_THROW(IO::write_energy_plot_SVG(path, {1, std::numeric_limits<double>::infinity()}, "E"), DO::Invalid_input);
-  IO::write_energy_plot_SVG(path, {3, 2, 1.5}, "E");
+  IO::write_energy_plot_SVG(path, {3, 2, 1.5}, "E <&> \"units\"");
   EXPECT_NE(contents(path).find("<polyline"), std::string::npos);
+  EXPECT_TRUE(tags_nest(contents(path)));
+  IO::write_energy_plot_SVG(path, {300, 2, 1.5}, "E");   // a log scale
+  EXPECT_NE(contents(path).find("(energy on a log scale)"), std::string::npos);
+  EXPECT_TRUE(tags_nest(contents(path)));
   std::remove(path.c_str());
 }
 
