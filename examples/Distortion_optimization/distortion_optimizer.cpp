@@ -350,12 +350,6 @@ int run_triangles(const Command_line& c)
                     : CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
     });
   };
-  const auto face_values = [&] {
-    distortion();
-    std::vector<double> values;
-    for(auto f : mesh.faces()) values.push_back(per_face[f]);
-    return values;
-  };
   DO::IO::Triangle_soup output;
   output.cells = source.cells;
   if(c.subdivide > 0) {
@@ -380,6 +374,11 @@ int run_triangles(const Command_line& c)
                                  {"subdivided_energy", json_number(distortion().mean_volume)}});
   }
   for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
+  std::vector<double> values;   // each face's distortion, evaluated once for the outputs that show it
+  if(DO::IO::internal::extension(c.output) == "vtu" || (!c.svg.empty() && !c.ideal())) {
+    distortion();
+    for(auto f : mesh.faces()) values.push_back(per_face[f]);
+  }
   if(!c.flat_output.empty()) DO::IO::write_triangle_soup(c.flat_output, output);
   if(!planar && DO::IO::internal::extension(c.output) == "obj") {
     // A parametrization as texture tools read it: the surface, with one UV per vertex.
@@ -394,7 +393,7 @@ int run_triangles(const Command_line& c)
     std::vector<std::array<double, 3>> displacement;
     for(Vertex v : mesh.vertices())
       displacement.push_back({uv[v].x() - mesh.point(v).x(), uv[v].y() - mesh.point(v).y(), -mesh.point(v).z()});
-    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, face_values()}}, {{"displacement", displacement}});
+    DO::IO::write_VTU(c.output, output.points, output.cells, {{measure_name, values}}, {{"displacement", displacement}});
   } else {
     DO::IO::write_triangle_soup(c.output, output);
   }
@@ -407,8 +406,8 @@ int run_triangles(const Command_line& c)
                      DO::IO::triangle_panel("after", output.points, output.cells, DO::radius_ratios(output.points, output.cells)),
                      "radius ratio", measure_name, r);
     else
-      write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, face_values()),
-                     DO::IO::triangle_panel("map", output.points, output.cells, face_values()), measure_name, measure_name, r);
+      write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, values),
+                     DO::IO::triangle_panel("map", output.points, output.cells, values), measure_name, measure_name, r);
   } else {
     write_pictures(c, {}, {}, measure_name, measure_name, r);
   }
