@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzes the OFF, OBJ and Medit readers, the vertex-list reader (the tool's --fix file) and the
-# tool's command-line parser with libFuzzer (clang), AddressSanitizer and UBSan.
+# Fuzzes the OFF, OBJ, Medit and TetGen readers, the vertex-list and vertex-weight readers (the
+# tool's --fix and --vertex-weights files) and the tool's command-line parser with libFuzzer
+# (clang), AddressSanitizer and UBSan.
 #   bash scripts/fuzz.sh [seconds per target, default 600] [target ...]
 # Seeds: the real meshes extracted by the build (build/data) and small hand-written files.
 # Exits non-zero if a reader crashed, hung or raised a sanitizer report; artifacts go to
@@ -10,7 +11,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds="${1:-600}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT_soup read_vertex_list command_line)
+[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT_soup read_TetGen_pair read_vertex_list command_line)
 
 missing=()
 for pkg in clang libclang-rt-14-dev libeigen3-dev libcgal-dev libboost-dev libgmp-dev libmpfr-dev libcgal-demo; do
@@ -47,6 +48,11 @@ for reader in "${targets[@]}"; do
     read_MEDIT_soup)
       cp build/data/*.mesh "$dir/corpus/" 2>/dev/null || true
       printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 1\nEnd\n' > "$dir/corpus/tet.mesh" ;;
+    read_TetGen_pair)   # .node text, a NUL byte, .ele text
+      { printf '4 3 0 1\n1 0 0 0 1\n2 1 0 0 1\n3 0 1 0 1\n4 0 0 1 1\n'; printf '\0'; printf '1 4 1\n1 1 2 3 4 7\n'; } \
+        > "$dir/corpus/tet.tetgen"
+      { printf '# 0-based, quadratic\n4 3 1 0\n0 0 0 0 5\n1 1 0 0 5\n2 0 1 0 5\n3 0 0 1 5\n'; printf '\0'
+        printf '1 10 0\n0 0 1 2 3 0 1 2 3 0 1\n'; } > "$dir/corpus/quadratic.tetgen" ;;
     read_vertex_list)
       printf '# pinned\n0\n12\n\n999\n' > "$dir/corpus/list.txt"
       printf '\xef\xbb\xbf3 # bom\n-1\n1000\n7 8\n' > "$dir/corpus/bad.txt" ;;

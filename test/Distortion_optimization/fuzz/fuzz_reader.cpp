@@ -1,5 +1,5 @@
 // libFuzzer target for the package's mesh readers. Build one binary per format with
-// -DFUZZ_READER=read_OFF, read_OBJ or read_MEDIT_soup (scripts/fuzz.sh does). Any input must either
+// -DFUZZ_READER=read_OFF, read_OBJ, read_MEDIT_soup or read_TetGen_pair (scripts/fuzz.sh does). Any input must either
 // parse into a consistent soup or raise Invalid_input: another exception, a crash, a hang or a
 // sanitizer report is a bug.
 
@@ -14,10 +14,20 @@
 #include <string>
 
 #ifndef FUZZ_READER
-#error "define FUZZ_READER as read_OFF, read_OBJ or read_MEDIT_soup"
+#error "define FUZZ_READER as read_OFF, read_OBJ, read_MEDIT_soup or read_TetGen_pair"
 #endif
 
 namespace IO = CGAL::Distortion_optimization::IO;
+
+// read_TetGen reads two streams: the input is the .node text, a NUL byte, then the .ele text.
+IO::Tetrahedron_soup read_TetGen_pair(std::istream& in, const std::string& name)
+{
+  std::string node, ele;
+  std::getline(in, node, '\0');
+  std::getline(in, ele, '\0');
+  std::istringstream node_in(node), ele_in(ele);
+  return IO::read_TetGen(node_in, ele_in, name + ".node", name + ".ele");
+}
 
 template <class Cells>
 void check(const std::vector<std::array<double, 3>>& points, const Cells& cells)
@@ -37,7 +47,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   try {
-    check(IO::FUZZ_READER(in, "fuzz"));
+    using namespace CGAL::Distortion_optimization::IO;   // the readers, and read_TetGen_pair above
+    check(FUZZ_READER(in, "fuzz"));
   } catch(const CGAL::Distortion_optimization::Invalid_input&) {
   }
   return 0;

@@ -1,8 +1,10 @@
-// libFuzzer target for IO::read_vertex_list (the tool's --fix file), for a mesh of 1000 vertices:
-// any input must give one flag per vertex or raise Invalid_input; anything else is a bug.
+// libFuzzer target for IO::read_vertex_list (the tool's --fix file), for a mesh of 1000 vertices,
+// and IO::read_vertex_weights (--vertex-weights), for 4 vertices: any input must give one flag
+// (one positive finite weight) per vertex or raise Invalid_input; anything else is a bug.
 
 #include <CGAL/Distortion_optimization/IO/vertex_list.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -11,9 +13,17 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  std::istringstream in(text), weights_in(text);
   try {
     if(CGAL::Distortion_optimization::IO::read_vertex_list(in, 1000, "fuzz").size() != 1000) std::abort();
+  } catch(const CGAL::Distortion_optimization::Invalid_input&) {
+  }
+  try {
+    const std::vector<double> w = CGAL::Distortion_optimization::IO::read_vertex_weights(weights_in, 4, "fuzz");
+    if(w.size() != 4) std::abort();
+    for(double x : w)
+      if(!(x > 0) || !std::isfinite(x)) std::abort();
   } catch(const CGAL::Distortion_optimization::Invalid_input&) {
   }
   return 0;
