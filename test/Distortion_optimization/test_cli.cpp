@@ -413,8 +413,11 @@ TEST(CommandLine, PicturesAndDisplacements)
   EXPECT_GE(occurrences(sections.substr(first_panel), "<polygon"), 32u);   // the map's own middle plane
   const std::vector<double> moved = vtu_array(slurp(temp("pic_cube_out.vtu")), "displacement");
   ASSERT_EQ(moved.size(), 3 * cube.points.size());
-  for(std::size_t v = 0; v < cube.points.size(); ++v)
-    if(cube.points[v][2] == 0) EXPECT_EQ(moved[3 * v], map.points[v][0] - cube.points[v][0]);   // fixed boundary
+  for(std::size_t v = 0; v < cube.points.size(); ++v) {
+    if(cube.points[v][2] == 0) {
+      EXPECT_EQ(moved[3 * v], map.points[v][0] - cube.points[v][0]);   // fixed boundary
+    }
+  }
 
   // A PLY source (read by CGAL's reader) with the same target: the same map.
   {
