@@ -51,6 +51,7 @@ std::string usage()
   "         [--svg P.svg [--svg-both]] [--energy-plot E.svg] [--vertex-weights FILE]\n"
   "         [--cell-weighting average|volume|uniform] [--order sorted|greedy]\n"
   "         [--parallel-sweep sets|partition] [--harmonic-start on|off]\n"
+  "         [--global-step newton|laplacian]\n"
   "       distortion_optimizer --source CLOSED --start ball|radial --output O.mesh\n"
   "         [--mesh-output M.mesh] [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]\n"
   "         [--carry INNER --carry-output C [--snap]] [options above]\n"
@@ -106,6 +107,9 @@ std::string usage()
   "               (the paper's Algorithm 2: the most distorted first, one thread)\n"
   "  --parallel-sweep  with threads: sets (default, independent sets of vertices) or partition\n"
   "               (the paper's Algorithm 3)\n"
+  "  --global-step  newton (projected Newton steps: the default for triangle maps, with\n"
+  "               symmetric_dirichlet, mips, arap, dirichlet) or laplacian (the reweighted\n"
+  "               Laplacian: the default for tetrahedral maps and the other measures)\n"
   "  --harmonic-start  on (default, except with --schedule local) or off: start from the\n"
   "               harmonic map of the fixed vertices where it is valid and better\n"
   "  --threads    number of threads (default 1); the output is the same for every run with\n"
@@ -148,6 +152,7 @@ struct Command_line
   std::string svg, energy_plot;              // pictures
   std::string vertex_weights;                // a file of one weight per vertex
   std::string cell_weighting = "average", order = "sorted", parallel_sweep = "sets", harmonic_start;
+  std::string global_step;                   // empty: the library's default for the dimension
   bool svg_both = false;                     // the source beside the map in --svg
   bool volume_mode() const { return !start.empty(); }
   bool ideal() const { return reference == "ideal"; }
@@ -278,6 +283,7 @@ Command_line parse(int argc, char** argv)
     else if(option == "--cell-weighting") c.cell_weighting = value;
     else if(option == "--order") c.order = value;
     else if(option == "--parallel-sweep") c.parallel_sweep = value;
+    else if(option == "--global-step") c.global_step = value;
     else if(option == "--harmonic-start") c.harmonic_start = value;
     else if(option == "--energy-plot") c.energy_plot = value;
     else if(option == "--carry") c.carry = value;
@@ -309,7 +315,8 @@ Command_line parse(int argc, char** argv)
   if(c.quiet && c.verbose) throw Usage_error("--quiet and --verbose contradict each other");
   const std::vector<std::pair<std::string, std::vector<std::string>>> choices = {
     {"--cell-weighting", {c.cell_weighting, "average", "volume", "uniform"}}, {"--order", {c.order, "sorted", "greedy"}},
-    {"--parallel-sweep", {c.parallel_sweep, "sets", "partition"}}};
+    {"--parallel-sweep", {c.parallel_sweep, "sets", "partition"}},
+    {"--global-step", {c.global_step.empty() ? "newton" : c.global_step, "newton", "laplacian"}}};
   for(const auto& [option, values] : choices)
     if(std::find(values.begin() + 1, values.end(), values[0]) == values.end()) {
       std::string allowed;

@@ -61,6 +61,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -153,15 +154,20 @@ public:
   explicit Progress(const Command_line& c)
     : show_(c.verbose || (!c.quiet && ::isatty(STDERR_FILENO))), limit_(c.time_limit), state_(std::make_shared<State>()) {}
 
-  bool operator()(std::size_t iteration, double energy) const
+  // The untangling's rounds (with --untangle) come first, their energy the barrier's; the
+  // optimization's iterations then start again from 1.
+  bool operator()(std::size_t iteration, double energy, std::size_t inverted) const
   {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - state_->start).count();
     if(show_) {
       char decrease[32] = "-";   // the visitor is not told the start's energy
-      if(iteration == 1) std::fprintf(stderr, "%9s %18s %11s %9s\n", "iteration", "energy", "decrease", "seconds");
-      else std::snprintf(decrease, sizeof decrease, "%.3e", (state_->energy - energy) / std::abs(state_->energy));
-      std::fprintf(stderr, "%9zu %18.10g %11s %9.3f\n", iteration, energy, decrease, seconds);
+      if(state_->iteration == 0)
+        std::fprintf(stderr, "%9s %18s %11s %9s %9s\n", "iteration", "energy", "decrease", "seconds", "inverted");
+      if(iteration > state_->iteration && state_->iteration > 0)
+        std::snprintf(decrease, sizeof decrease, "%.3e", (state_->energy - energy) / std::abs(state_->energy));
+      std::fprintf(stderr, "%9zu %18.10g %11s %9.3f %9zu\n", iteration, energy, decrease, seconds, inverted);
     }
+    state_->iteration = iteration;
     state_->energy = energy;
     return !(limit_ > 0 && seconds >= limit_);
   }
@@ -170,6 +176,7 @@ private:
   struct State
   {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    std::size_t iteration = 0;
     double energy = 0;
   };
   bool show_;
@@ -190,10 +197,15 @@ auto common_parameters(const Command_line& c, const Weights& weights)
   const auto order = c.order == "greedy" ? DO::Vertex_order::GREEDY : DO::Vertex_order::SORTED_PER_SWEEP;
   const auto sweep = c.parallel_sweep == "partition" ? DO::Parallel_sweep::PARTITION : DO::Parallel_sweep::INDEPENDENT_SETS;
   const bool harmonic = c.harmonic_start.empty() ? schedule != DO::Schedule::LOCAL : c.harmonic_start == "on";
+  // Without --global-step, the library's default for the mesh's dimension.
+  const std::optional<DO::Global_solver> solver_of_global_step =
+    c.global_step.empty() ? std::nullopt
+    : std::optional<DO::Global_solver>(c.global_step == "newton" ? DO::Global_solver::PROJECTED_NEWTON
+                                                                 : DO::Global_solver::REWEIGHTED_LAPLACIAN);
   return P::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)),
     P::schedule(schedule, P::local_solver(solver, P::untangle_first(c.untangle, P::convergence_threshold(c.threshold,
       P::cell_weighting(weighting, P::vertex_order(order, P::parallel_sweep(sweep, P::use_harmonic_start(harmonic,
-        P::vertex_weight_map(weights))))))))))
+        P::global_solver(solver_of_global_step, P::vertex_weight_map(weights)))))))))))
     .number_of_iterations(c.iterations).visitor(Progress(c));
 }
 

@@ -127,8 +127,8 @@ flattened (checked with exact predicates); the energy never increases.
                           (`Distortion_optimization::parameters::untangle_first()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`: under a normalized measure such a start is an error}
-    \cgalParamExtra{The untangling runs at most 1000 rounds and does not call the visitor; `number_of_iterations`
-                    and `visitor` apply to the minimization only. The result reports it in
+    \cgalParamExtra{The untangling runs at most 1000 rounds (`number_of_iterations` applies to the minimization
+                    only) and reports each round to the visitor. The result reports it in
                     `inverted_start_cells`, `untangle_iterations` and `untangle_seconds`.}
   \cgalParamNEnd
 
@@ -159,6 +159,14 @@ flattened (checked with exact predicates); the energy never increases.
     \cgalParamDefault{`Distortion_optimization::Parallel_sweep::INDEPENDENT_SETS`}
   \cgalParamNEnd
 
+  \cgalParamNBegin{global_solver}
+    \cgalParamDescription{the system that gives the direction of a global step
+                          (`Distortion_optimization::parameters::global_solver()`)}
+    \cgalParamType{`Distortion_optimization::Global_solver`: `REWEIGHTED_LAPLACIAN` or `PROJECTED_NEWTON`}
+    \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
+    \cgalParamExtra{Newton steps need a measure with a `hessian()` and no sliding boundary; otherwise the step is the Laplacian's.}
+  \cgalParamNEnd
+
   \cgalParamNBegin{sliding_boundary}
     \cgalParamDescription{a surface on which the border vertices that are not constrained slide
                           (`Distortion_optimization::parameters::sliding_boundary()`)}
@@ -182,11 +190,15 @@ flattened (checked with exact predicates); the energy never increases.
 
   \cgalParamNBegin{visitor}
     \cgalParamDescription{a callable called after each iteration (numbered from 1) with the mean energy of the map
-                          of that iteration; returning `false` stops the run with that map}
-    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` (the result may be any
-                   type convertible to `bool`)}
+                          of that iteration and, if it takes a third argument, the number of its inverted or flat
+                          cells; returning `false` stops the run with that map}
+    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` or
+                   `bool operator()(std::size_t iteration, double energy, std::size_t inverted_cells) const`
+                   (the result may be any type convertible to `bool`)}
     \cgalParamDefault{unused}
-    \cgalParamExtra{The visitor is copied.}
+    \cgalParamExtra{The visitor is copied. With `untangle_first`, the untangling's rounds are reported first, as
+                    by `Distortion_optimization::untangle()`, then the iterations are numbered from 1 again. A
+                    run stopped before the map is untangled returns that map with energies that are not numbers.}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -313,8 +325,8 @@ are the points of the triangulation.
                           (`Distortion_optimization::parameters::untangle_first()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`: under a normalized measure such a start is an error}
-    \cgalParamExtra{The untangling runs at most 1000 rounds and does not call the visitor; `number_of_iterations`
-                    and `visitor` apply to the minimization only. The result reports it in
+    \cgalParamExtra{The untangling runs at most 1000 rounds (`number_of_iterations` applies to the minimization
+                    only) and reports each round to the visitor. The result reports it in
                     `inverted_start_cells`, `untangle_iterations` and `untangle_seconds`.}
   \cgalParamNEnd
 
@@ -345,6 +357,14 @@ are the points of the triangulation.
     \cgalParamDefault{`Distortion_optimization::Parallel_sweep::INDEPENDENT_SETS`}
   \cgalParamNEnd
 
+  \cgalParamNBegin{global_solver}
+    \cgalParamDescription{the system that gives the direction of a global step
+                          (`Distortion_optimization::parameters::global_solver()`)}
+    \cgalParamType{`Distortion_optimization::Global_solver`: `REWEIGHTED_LAPLACIAN` or `PROJECTED_NEWTON`}
+    \cgalParamDefault{`Distortion_optimization::Global_solver::REWEIGHTED_LAPLACIAN`}
+    \cgalParamExtra{`PROJECTED_NEWTON` factors a system of 3 unknowns per free vertex, which fills in heavily for tetrahedral meshes: many times slower than the default beyond a few thousand tetrahedra.}
+  \cgalParamNEnd
+
   \cgalParamNBegin{sliding_boundary}
     \cgalParamDescription{a surface on which the boundary vertices of the complex that are not constrained slide
                           (`Distortion_optimization::parameters::sliding_boundary()`)}
@@ -367,11 +387,15 @@ are the points of the triangulation.
 
   \cgalParamNBegin{visitor}
     \cgalParamDescription{a callable called after each iteration (numbered from 1) with the mean energy of the map
-                          of that iteration; returning `false` stops the run with that map}
-    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` (the result may be any
-                   type convertible to `bool`)}
+                          of that iteration and, if it takes a third argument, the number of its inverted or flat
+                          cells; returning `false` stops the run with that map}
+    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` or
+                   `bool operator()(std::size_t iteration, double energy, std::size_t inverted_cells) const`
+                   (the result may be any type convertible to `bool`)}
     \cgalParamDefault{unused}
-    \cgalParamExtra{The visitor is copied.}
+    \cgalParamExtra{The visitor is copied. With `untangle_first`, the untangling's rounds are reported first, as
+                    by `Distortion_optimization::untangle()`, then the iterations are numbered from 1 again. A
+                    run stopped before the map is untangled returns that map with energies that are not numbers.}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 

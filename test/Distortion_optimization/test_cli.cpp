@@ -235,9 +235,28 @@ TEST(CommandLine, UntangleThenOptimize)
   EXPECT_NE(result.output.find("untangle"), std::string::npos) << result.output;
   EXPECT_FALSE(exists(o));
 
-  result = run("--source " + s + " --target " + t + " --output " + o + " --measure symmetric_dirichlet --untangle --report " + r);
+  result = run("--source " + s + " --target " + t + " --output " + o + " --measure symmetric_dirichlet --untangle --verbose --report " + r);
   ASSERT_EQ(result.status, 0) << result.output;
   const std::string json = slurp(r);
+  // --verbose: the untangling's rounds (the last with no inverted cell), then the optimization's
+  // iterations from 1 again, none with an inverted cell.
+  std::vector<std::pair<std::size_t, std::size_t>> rows;   // (iteration, inverted)
+  std::istringstream lines(result.output);
+  for(std::string line; std::getline(lines, line);) {
+    std::istringstream fields(line);
+    std::size_t iteration, cells;
+    double energy, seconds;
+    std::string decrease;
+    if(fields >> iteration >> energy >> decrease >> seconds >> cells) rows.emplace_back(iteration, cells);
+  }
+  const std::size_t rounds = static_cast<std::size_t>(json_value(json, "untangle_iterations"));
+  ASSERT_EQ(rows.size(), rounds + static_cast<std::size_t>(json_value(json, "sweeps"))) << result.output;
+  EXPECT_GT(rounds, 0u) << result.output;
+  for(std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].first, i < rounds ? i + 1 : i - rounds + 1) << result.output;
+    EXPECT_LE(rows[i].second, tangled) << result.output;
+    if(i + 1 >= rounds) { EXPECT_EQ(rows[i].second, 0u) << result.output; }
+  }
   EXPECT_EQ(json_value(json, "inverted_start_cells"), tangled) << json;
   EXPECT_EQ(json_value(json, "inverted_cells"), 0) << json;
   EXPECT_GT(json_value(json, "untangle_iterations"), 0) << json;
@@ -267,9 +286,11 @@ TEST(CommandLine, ProgressLinesAndTimeLimit)
     std::istringstream fields(line);
     std::size_t iteration;
     double energy, seconds;
+    std::size_t inverted;
     std::string decrease;   // "-" on the first line
-    if(fields >> iteration >> energy >> decrease >> seconds) {
+    if(fields >> iteration >> energy >> decrease >> seconds >> inverted) {
       EXPECT_EQ(iteration, ++rows) << line;
+      EXPECT_EQ(inverted, 0u) << line;
       last = energy;
     }
   }
@@ -520,6 +541,17 @@ TEST(CommandLine, WeightsOrdersSweepsAndWeightedSums)
   EXPECT_NE(slurp(o), harmonic);
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --order random").status, 2);
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --harmonic-start yes").status, 2);
+  // Newton steps are the default for a triangle map: --global-step newton writes the same map;
+  // the Laplacian's steps reach the same energy by another path.
+  const auto by_default = energies("--measure symmetric_dirichlet --threshold 1e-8 --iterations 500");
+  const std::string default_map = slurp(o);
+  const auto newton = energies("--measure symmetric_dirichlet --threshold 1e-8 --iterations 500 --global-step newton");
+  EXPECT_EQ(slurp(o), default_map);
+  const auto laplacian = energies("--measure symmetric_dirichlet --threshold 1e-8 --iterations 500 --global-step laplacian");
+  EXPECT_NE(slurp(o), default_map);
+  EXPECT_EQ(newton.second, by_default.second);
+  EXPECT_NEAR(laplacian.second, newton.second, 1e-5 * (newton.second - 1));
+  EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --global-step cholesky").status, 2);
 }
 
 // The usage the manual shows is the tool's --help, to the character.

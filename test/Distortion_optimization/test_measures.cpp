@@ -1,11 +1,13 @@
 // Measures, signed SVD and the per-cell kernel (no mesh involved).
 
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
+#include <CGAL/Distortion_optimization/internal/cell_hessian.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 #include <CGAL/Distortion_optimization/measures.h>
 
 #include "reference_svd.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
@@ -14,6 +16,7 @@
 #include <random>
 #include <sstream>
 #include <tuple>
+#include <type_traits>
 
 namespace DO = CGAL::Distortion_optimization;
 using DO::internal::Matrix;
@@ -255,6 +258,70 @@ void check_gradient_against_finite_differences()
 
 TEST(Measures, JacobianGradientMatchesFiniteDifferences2D) { check_gradient_against_finite_differences<2>(); }
 TEST(Measures, JacobianGradientMatchesFiniteDifferences3D) { check_gradient_against_finite_differences<3>(); }
+
+// The measures with a Hessian in the singular values: it matches central differences of their
+// gradient. Then the cell Hessian in the vertices (cell_hessian.h, unprojected) matches central
+// differences of the cell's vertex gradient, and its projection is positive semi-definite, equal
+// to it where it already was.
+template <int n>
+void check_hessians()
+{
+  std::size_t measures_with_hessian = 0;
+  for_each_measure([&](const auto& m) {
+    using Measure = std::decay_t<decltype(m)>;
+    if constexpr(DO::measures_internal::Has_hessian<Measure, n>::value) {
+      ++measures_with_hessian;
+      for(int trial = 0; trial < 30; ++trial) {
+        const Matrix<n> J = random_well_conditioned<n>();
+        const Vector<n> s = DO::internal::signed_singular_values(J);
+        const Matrix<n> h = m.template hessian<n>(s);
+        const double step = 1e-6;
+        for(int j = 0; j < n; ++j) {
+          Vector<n> sp = s, sm = s;
+          sp[j] += step;
+          sm[j] -= step;
+          const Vector<n> fd = (m.template gradient<n>(sp) - m.template gradient<n>(sm)) / (2 * step);
+          EXPECT_LE((h.col(j) - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << " j=" << j;
+        }
+        // A cell: a random source, its target edges J Dm.
+        const Matrix<n> Dm = random_well_conditioned<n>(), M = Dm.inverse();
+        const Matrix<n> Ds = J * Dm;
+        DO::internal::Cell_hessian<n> H, projected;
+        std::array<Vector<n>, n + 1> gradient, other;
+        ASSERT_TRUE(DO::internal::cell_hessian<n>(m, J, M, H, gradient, false)) << m.name();
+        ASSERT_TRUE(DO::internal::cell_hessian<n>(m, J, M, projected, other, true)) << m.name();
+        EXPECT_LE((H - H.transpose()).norm(), 1e-10 * H.norm()) << m.name();
+        // Moving vertex i by e_a moves Ds: every column for vertex 0 (with a minus), column i-1 otherwise.
+        const auto gradient_at = [&](int i, int a, double t) {
+          Matrix<n> D = Ds;
+          if(i == 0) D.row(a).array() -= t;
+          else D(a, i - 1) += t;
+          DO::internal::Cell_hessian<n> unused;
+          std::array<Vector<n>, n + 1> g;
+          DO::internal::cell_hessian<n>(m, Matrix<n>(D * M), M, unused, g, false);
+          Eigen::Matrix<double, n * (n + 1), 1> flat;
+          for(int k = 0; k <= n; ++k) flat.template segment<n>(n * k) = g[k];
+          return flat;
+        };
+        for(int i = 0; i <= n; ++i)
+          for(int a = 0; a < n; ++a) {
+            const Eigen::Matrix<double, n * (n + 1), 1> fd = (gradient_at(i, a, step) - gradient_at(i, a, -step)) / (2 * step);
+            EXPECT_LE((H.col(n * i + a) - fd).norm(), 1e-5 * std::max(1., fd.norm())) << m.name() << " n=" << n;
+          }
+        const Eigen::SelfAdjointEigenSolver<DO::internal::Cell_hessian<n>> unprojected(H), psd(projected);
+        EXPECT_GE(psd.eigenvalues().minCoeff(), -1e-10 * std::max(1., psd.eigenvalues().maxCoeff())) << m.name();
+        if(unprojected.eigenvalues().minCoeff() > 1e-8 * unprojected.eigenvalues().maxCoeff()) {
+          EXPECT_LE((H - projected).norm(), 1e-10 * H.norm()) << m.name();
+        }
+      }
+    }
+  });
+  // symmetric_dirichlet, mips, arap, dirichlet and the weighted sum of SD and ARAP.
+  EXPECT_EQ(measures_with_hessian, 5u);
+}
+
+TEST(Measures, HessiansMatchFiniteDifferences2D) { check_hessians<2>(); }
+TEST(Measures, HessiansMatchFiniteDifferences3D) { check_hessians<3>(); }
 
 template <int n, class M>
 void check_svd_free_form(const M& m)

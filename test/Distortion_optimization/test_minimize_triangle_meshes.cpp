@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -40,22 +41,25 @@ void expect_recovers(const Map& f, const Measure& measure, DO::Local_solver solv
 {
   // Pure global steps stall at the kinks of C = max(s1, 1/s2) (a Laplacian-preconditioned step
   // moves every vertex along one smooth model); alternating with local sweeps gets past them.
+  // Both global solvers (Newton only differs for measures with a Hessian).
   const bool global_too = measure.name() != "isometric";
-  for(auto schedule : {DO::Schedule::LOCAL, DO::Schedule::GLOBAL, DO::Schedule::ALTERNATING}) {
-    if(schedule == DO::Schedule::GLOBAL && !global_too) continue;
-    Noisy_map m(f, 0.02);
-    ASSERT_GT(m.max_error(), 1e-3);
-    std::vector<double> energies;
-    auto visitor = [&](std::size_t, double e) { energies.push_back(e); return true; };
-    const auto r = CGAL::minimize_distortion(m.mesh, m.uv, measure,
-      DO::parameters::convergence_threshold(0., DO::parameters::local_solver(solver, DO::parameters::schedule(schedule,
-        DO::parameters::use_harmonic_start(false)))).number_of_iterations(4000).visitor(visitor));
-    EXPECT_LE(m.max_error(), 1e-5 * m.diameter()) << measure.name() << " schedule " << int(schedule) << " after "
-                                                  << r.iterations << " iterations";
-    EXPECT_EQ(r.inverted_cells, 0u);
-    EXPECT_EQ(count_flipped(m.mesh, m.uv), 0u);
-    for(std::size_t i = 1; i < energies.size(); ++i) ASSERT_LE(energies[i], energies[i - 1]) << measure.name();
-  }
+  for(auto schedule : {DO::Schedule::LOCAL, DO::Schedule::GLOBAL, DO::Schedule::ALTERNATING})
+    for(auto global : {DO::Global_solver::REWEIGHTED_LAPLACIAN, DO::Global_solver::PROJECTED_NEWTON}) {
+      if(schedule == DO::Schedule::GLOBAL && !global_too) continue;
+      if(schedule == DO::Schedule::LOCAL && global == DO::Global_solver::PROJECTED_NEWTON) continue;
+      Noisy_map m(f, 0.02);
+      ASSERT_GT(m.max_error(), 1e-3);
+      std::vector<double> energies;
+      auto visitor = [&](std::size_t, double e) { energies.push_back(e); return true; };
+      const auto r = CGAL::minimize_distortion(m.mesh, m.uv, measure,
+        DO::parameters::convergence_threshold(0., DO::parameters::local_solver(solver, DO::parameters::schedule(schedule,
+          DO::parameters::use_harmonic_start(false, DO::parameters::global_solver(global))))).number_of_iterations(4000).visitor(visitor));
+      EXPECT_LE(m.max_error(), 1e-5 * m.diameter()) << measure.name() << " schedule " << int(schedule) << " solver "
+                                                    << int(global) << " after " << r.iterations << " iterations";
+      EXPECT_EQ(r.inverted_cells, 0u);
+      EXPECT_EQ(count_flipped(m.mesh, m.uv), 0u);
+      for(std::size_t i = 1; i < energies.size(); ++i) ASSERT_LE(energies[i], energies[i - 1]) << measure.name();
+    }
 }
 
 std::string data(const std::string& name) { return std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/" + name; }
@@ -315,6 +319,34 @@ TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
   }
 }
 
+
+// Projected Newton steps and the reweighted Laplacian's reach the same minimum of symmetric
+// Dirichlet (border fixed, and free with the guard) on a real disk.
+TEST(MinimizeDistortion, NewtonAndLaplacianGlobalStepsReachTheSameMinimum)
+{
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("nefertiti.off"), mesh));
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  DO::initial_parameterization(mesh, uv);
+  auto tutte = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:tutte").first;
+  for(auto v : mesh.vertices()) tutte[v] = uv[v];
+  auto none = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
+  for(const bool fixed : {true, false}) {
+    std::array<DO::Result, 2> results;
+    for(int k = 0; k < 2; ++k) {
+      for(auto v : mesh.vertices()) uv[v] = tutte[v];
+      const auto np = DO::parameters::global_solver(k == 0 ? DO::Global_solver::REWEIGHTED_LAPLACIAN : DO::Global_solver::PROJECTED_NEWTON,
+        DO::parameters::convergence_threshold(1e-9)).number_of_iterations(1000);
+      results[k] = fixed ? CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(), np)
+                         : CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(),
+                             DO::parameters::preserve_global_injectivity(true, np.vertex_is_constrained_map(none)));
+      EXPECT_EQ(count_flipped(mesh, uv), 0u) << fixed << k;
+      EXPECT_NEAR(brute_force_energy(mesh, uv, "symmetric_dirichlet"), results[k].final_energy, 1e-9 * results[k].final_energy);
+      if(!fixed) { EXPECT_EQ(border_self_intersections(mesh, uv), 0u) << k; }
+    }
+    EXPECT_NEAR(results[1].final_energy, results[0].final_energy, 1e-6 * results[0].final_energy) << fixed;
+  }
+}
 
 // A helical ramp of 1.2 turns (r in [1, 2], z = 0.3 theta): a disk whose flattening wants an
 // annular sector of more than 360 degrees, so an unguarded free-boundary run overlaps its ends.

@@ -45,14 +45,19 @@ TEST(Untangle, TangledGridsWithAFixedBoundaryBecomeInjective)
     const std::size_t tangled = count_flipped(g.mesh, g.uv);
     ASSERT_GT(tangled, 20u) << seed;
     const std::vector<Point_2> start = g.targets();
-    std::vector<double> inverted_per_round;
+    std::vector<std::size_t> inverted_per_round;
     const DO::Untangle_result r = DO::untangle(g.mesh, g.uv, CGAL::parameters::vertex_is_constrained_map(fixed)
-      .visitor([&](std::size_t, double inverted) { inverted_per_round.push_back(inverted); return true; }));
+      .visitor([&](std::size_t round, double barrier, std::size_t inverted) {
+        EXPECT_EQ(round, inverted_per_round.size() + 1);
+        EXPECT_TRUE(std::isfinite(barrier));
+        inverted_per_round.push_back(inverted);
+        return true;
+      }));
     EXPECT_EQ(r.inverted_before, tangled) << seed;
     EXPECT_EQ(r.inverted_after, 0u) << seed;
     EXPECT_EQ(count_flipped(g.mesh, g.uv), 0u) << seed;
     EXPECT_EQ(inverted_per_round.size(), r.iterations);
-    EXPECT_EQ(inverted_per_round.back(), 0.);
+    EXPECT_EQ(inverted_per_round.back(), 0u);
     for(auto v : g.mesh.vertices())
       if(fixed[v]) { EXPECT_EQ(g.uv[v], start[v.idx()]) << seed; }
 
@@ -69,6 +74,32 @@ TEST(Untangle, TangledGridsWithAFixedBoundaryBecomeInjective)
     EXPECT_NEAR(brute_force_energy(g.mesh, g.uv, "symmetric_dirichlet"), m.final_energy, 1e-9 * m.final_energy);
     for(auto v : g.mesh.vertices())
       if(fixed[v]) { EXPECT_EQ(g.uv[v], start[v.idx()]) << seed; }
+
+    // A visitor that stops at the first round, cells still inverted: that round's map, the count
+    // it was told, and energies that are not numbers (the measure is infinite on inverted cells).
+    if(inverted_per_round.front() == 0) continue;
+    for(auto v : g.mesh.vertices()) g.uv[v] = start[v.idx()];
+    std::size_t told = 0;
+    const DO::Result stopped = CGAL::minimize_distortion(g.mesh, g.uv, DO::Symmetric_dirichlet(),
+      DO::parameters::untangle_first(true, CGAL::parameters::vertex_is_constrained_map(fixed)
+        .visitor([&](std::size_t, double, std::size_t inverted) { told = inverted; return false; })));
+    EXPECT_TRUE(stopped.stopped_by_visitor);
+    EXPECT_GT(stopped.inverted_cells, 0u);
+    EXPECT_EQ(stopped.inverted_cells, told);
+    EXPECT_EQ(count_flipped(g.mesh, g.uv), told);
+    EXPECT_TRUE(std::isnan(stopped.final_energy));
+
+    // Stopped at the round that untangles the map: no optimization, the untangled map's energy.
+    for(auto v : g.mesh.vertices()) g.uv[v] = start[v.idx()];
+    const DO::Result at_zero = CGAL::minimize_distortion(g.mesh, g.uv, DO::Symmetric_dirichlet(),
+      DO::parameters::untangle_first(true, CGAL::parameters::vertex_is_constrained_map(fixed)
+        .visitor([&](std::size_t, double, std::size_t inverted) { return inverted > 0; })));
+    EXPECT_TRUE(at_zero.stopped_by_visitor);
+    EXPECT_EQ(at_zero.iterations, 0u);
+    EXPECT_EQ(at_zero.inverted_cells, 0u);
+    EXPECT_EQ(count_flipped(g.mesh, g.uv), 0u);
+    EXPECT_EQ(at_zero.final_energy, at_zero.initial_energy);
+    EXPECT_NEAR(brute_force_energy(g.mesh, g.uv, "symmetric_dirichlet"), at_zero.final_energy, 1e-9 * at_zero.final_energy);
   }
 }
 

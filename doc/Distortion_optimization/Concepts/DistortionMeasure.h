@@ -149,5 +149,20 @@ weight of its factors.
 template <int n>
 double laplacian_weight(const CGAL::Distortion_optimization::Singular_values<n>& s) const;
 
+/*!
+returns the matrix of second derivatives of D in the singular values `s` (ordered as
+`gradient()`'s), where D is smooth and the cell is positively oriented.
+
+Detected when `m.template hessian<n>(s)` is well-formed. With it, the global steps of
+`CGAL::minimize_distortion()` may be projected Newton steps (`Distortion_optimization::Global_solver`):
+the package builds each cell's Hessian in its vertices from `gradient()` and `hessian()` and
+makes it positive semi-definite. For a pair of equal singular values it uses `h(i,i) - h(i,j)`,
+which assumes D symmetric in them. A result that is not finite on some cell makes that step use
+the Laplacian instead. `Product` and `Weighted_sum` have it when both operands do.
+*/
+template <int n>
+CGAL::Distortion_optimization::Singular_values_hessian<n>
+hessian(const CGAL::Distortion_optimization::Singular_values<n>& s) const;
+
 /// @}
 };

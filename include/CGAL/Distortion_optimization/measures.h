@@ -28,6 +28,11 @@ namespace Distortion_optimization {
 template <int n> using Singular_values = Eigen::Matrix<double, n, 1>;
 
 /// \ingroup PkgDistortionOptimizationMeasures
+/// The n x n matrix of second derivatives of a measure in the singular values (the optional
+/// member `hessian()` of `DistortionMeasure`).
+template <int n> using Singular_values_hessian = Eigen::Matrix<double, n, n>;
+
+/// \ingroup PkgDistortionOptimizationMeasures
 /// The n x n Jacobian of a simplicial map on one cell.
 template <int n> using Jacobian = Eigen::Matrix<double, n, n>;
 
@@ -76,6 +81,13 @@ struct Has_laplacian_weight : std::false_type {};
 template <class Measure, int n>
 struct Has_laplacian_weight<Measure, n,
   std::void_t<decltype(std::declval<const Measure&>().template laplacian_weight<n>(std::declval<const Singular_values<n>&>()))>>
+  : std::true_type {};
+
+template <class Measure, int n, class = void>
+struct Has_hessian : std::false_type {};
+template <class Measure, int n>
+struct Has_hessian<Measure, n,
+  std::void_t<decltype(std::declval<const Measure&>().template hessian<n>(std::declval<const Singular_values<n>&>()))>>
   : std::true_type {};
 
 // The factor by which the global step's Laplacian weighs a cell (1 if the measure names none).
@@ -210,6 +222,16 @@ struct MIPS
     const double scale = measures_internal::mean_square_scale<n>(s.prod()), v = s.squaredNorm() / scale;
     return (2. / scale) * s - (2. / n) * v * s.cwiseInverse();
   }
+  // d/ds_j of the gradient's 2 s_i / scale - (2/n) v / s_i.
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    const double scale = measures_internal::mean_square_scale<n>(s.prod()), v = s.squaredNorm() / scale;
+    const Singular_values<n> inverse = s.cwiseInverse(), g = (2. / scale) * s - (2. / n) * v * inverse;
+    Singular_values_hessian<n> h = (-2. / n) * (inverse * g.transpose()) - (4. / (n * scale)) * (s * inverse.transpose());
+    h.diagonal() += (2. / scale) * Singular_values<n>::Ones() + (2. / n) * v * inverse.cwiseAbs2();
+    return h;
+  }
   template <int n, class T>
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
@@ -259,6 +281,11 @@ struct ARAP : measures_internal::Unbounded_measure
   {
     return 2. * (s.array() - 1.).matrix();
   }
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>&) const
+  {
+    return 2. * Singular_values_hessian<n>::Identity();
+  }
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
@@ -279,6 +306,11 @@ struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_interna
   {
     if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
     return (s.array() - s.array().cube().inverse()).matrix() / n;
+  }
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    return ((1. + 3. * s.array().square().square().inverse()) / n).matrix().asDiagonal();
   }
   // |J^-1|^2 = |cof J|^2 / det^2.
   template <int n, class T>
@@ -337,6 +369,11 @@ struct Dirichlet : measures_internal::Unbounded_measure
   Singular_values<n> gradient(const Singular_values<n>& s) const
   {
     return (2. / n) * s;
+  }
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>&) const
+  {
+    return (2. / n) * Singular_values_hessian<n>::Identity();
   }
   template <int n, class T>
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
@@ -441,6 +478,14 @@ struct Product : measures_internal::Pair_of_measures<A, B>
   {
     return a.template gradient<n>(s) * b.template value<n>(s) + a.template value<n>(s) * b.template gradient<n>(s);
   }
+  template <int n, class AA = A, class = std::enable_if_t<measures_internal::Has_hessian<AA, n>::value &&
+                                                          measures_internal::Has_hessian<B, n>::value>>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    const Singular_values<n> ga = a.template gradient<n>(s), gb = b.template gradient<n>(s);
+    return a.template hessian<n>(s) * b.template value<n>(s) + a.template value<n>(s) * b.template hessian<n>(s) +
+           ga * gb.transpose() + gb * ga.transpose();
+  }
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
@@ -473,6 +518,15 @@ struct Weighted_sum : measures_internal::Pair_of_measures<A, B>
     if(weight_a != 0) g += weight_a * a.template gradient<n>(s);
     if(weight_b != 0) g += weight_b * b.template gradient<n>(s);
     return g;
+  }
+  template <int n, class AA = A, class = std::enable_if_t<measures_internal::Has_hessian<AA, n>::value &&
+                                                          measures_internal::Has_hessian<B, n>::value>>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    Singular_values_hessian<n> h = Singular_values_hessian<n>::Zero();
+    if(weight_a != 0) h += weight_a * a.template hessian<n>(s);
+    if(weight_b != 0) h += weight_b * b.template hessian<n>(s);
+    return h;
   }
 };
 

@@ -357,7 +357,7 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
                           (`Distortion_optimization::parameters::untangle_first()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`: under a normalized measure an inverted or flat start cell is an error}
-    \cgalParamExtra{At most 1000 rounds, without the visitor. A flat triangle of a triangle mesh at `positions` is a
+    \cgalParamExtra{At most 1000 rounds, reported to the visitor first. A flat triangle of a triangle mesh at `positions` is a
                     degenerate source cell, an error even with this parameter.}
   \cgalParamNEnd
 
@@ -402,8 +402,10 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
   \cgalParamNEnd
 
   \cgalParamNBegin{visitor}
-    \cgalParamDescription{a callable called after each iteration with the mean energy; returning `false` stops the run}
-    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const`}
+    \cgalParamDescription{a callable called after each iteration with the mean energy (and, if it takes a third
+                          argument, the number of inverted or flat cells); returning `false` stops the run}
+    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` or
+                   `bool operator()(std::size_t iteration, double energy, std::size_t inverted_cells) const`}
     \cgalParamDefault{unused}
   \cgalParamNEnd
 \cgalNamedParamsEnd

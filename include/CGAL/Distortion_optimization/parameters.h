@@ -52,6 +52,15 @@ enum class Schedule
 };
 
 /// \ingroup PkgDistortionOptimizationRef
+/// The linear system whose solution is the direction of a global step (schedules `GLOBAL` and
+/// `ALTERNATING`).
+enum class Global_solver
+{
+  REWEIGHTED_LAPLACIAN, ///< the source's Laplacian reweighted per cell, solved by a few conjugate gradient iterations
+  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`, no sliding boundary; the Laplacian otherwise)
+};
+
+/// \ingroup PkgDistortionOptimizationRef
 /// How local sweeps are shared among threads (with `number_of_threads` > 1).
 enum class Parallel_sweep
 {
@@ -70,6 +79,7 @@ enum local_solver_t { local_solver };
 enum vertex_order_t { vertex_order };
 enum number_of_threads_t { number_of_threads };
 enum parallel_sweep_t { parallel_sweep };
+enum global_solver_t { global_solver };
 enum preserve_global_injectivity_t { preserve_global_injectivity };
 enum untangle_first_t { untangle_first };
 enum sliding_boundary_t { sliding_boundary };
@@ -117,6 +127,10 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(use_harmonic_start_t, use_harmo
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
 /// A `Parallel_sweep`; default `Parallel_sweep::INDEPENDENT_SETS`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_sweep)
+/// A `Global_solver`; default `Global_solver::PROJECTED_NEWTON` for triangle meshes,
+/// `Global_solver::REWEIGHTED_LAPLACIAN` for tetrahedral meshes (whose Newton systems fill in
+/// too much for a sparse factorization).
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(global_solver_t, global_solver)
 
 /// `bool`: keep the map globally injective when boundary vertices are free (paper section 3.2):
 /// a move that would make the target boundary cross itself is shortened. The start map's

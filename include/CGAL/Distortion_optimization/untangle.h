@@ -125,11 +125,13 @@ a measure from the untangled map.
   \cgalParamNEnd
 
   \cgalParamNBegin{visitor}
-    \cgalParamDescription{a callable called after each round with the number of the round in its attempt and the
-                          number of inverted or flat cells left in the part of the map being untangled;
-                          returning `false` stops the run and writes the map of that round}
-    \cgalParamType{a class with `bool operator()(std::size_t round, double inverted_cells) const` (the result may
-                   be any type convertible to `bool`)}
+    \cgalParamDescription{a callable called after each round (numbered from 1 over all attempts) with the mean
+                          untangling barrier of the part of the map being untangled and, if it takes a third
+                          argument, the number of inverted or flat cells left in that part; returning `false`
+                          stops the run and writes the map of that round}
+    \cgalParamType{a class with `bool operator()(std::size_t round, double barrier) const` or
+                   `bool operator()(std::size_t round, double barrier, std::size_t inverted_cells) const`
+                   (the result may be any type convertible to `bool`)}
     \cgalParamDefault{unused}
     \cgalParamExtra{The visitor is copied.}
   \cgalParamNEnd
@@ -243,11 +245,13 @@ cells in the complex count).
   \cgalParamNEnd
 
   \cgalParamNBegin{visitor}
-    \cgalParamDescription{a callable called after each round with the number of the round in its attempt and the
-                          number of inverted or flat cells left in the part of the map being untangled;
-                          returning `false` stops the run and writes the map of that round}
-    \cgalParamType{a class with `bool operator()(std::size_t round, double inverted_cells) const` (the result may
-                   be any type convertible to `bool`)}
+    \cgalParamDescription{a callable called after each round (numbered from 1 over all attempts) with the mean
+                          untangling barrier of the part of the map being untangled and, if it takes a third
+                          argument, the number of inverted or flat cells left in that part; returning `false`
+                          stops the run and writes the map of that round}
+    \cgalParamType{a class with `bool operator()(std::size_t round, double barrier) const` or
+                   `bool operator()(std::size_t round, double barrier, std::size_t inverted_cells) const`
+                   (the result may be any type convertible to `bool`)}
     \cgalParamDefault{unused}
     \cgalParamExtra{The visitor is copied.}
   \cgalParamNEnd

@@ -12,6 +12,12 @@
 //    0.9 times the exact largest step before a cell degenerates (per cell, det(Ds + t dDs) is a
 //    quadratic in 2D, a cubic in 3D: its smallest positive root), then backtracks (Armijo), and is
 //    accepted only if CGAL's exact orientation predicate sees no flipped cell.
+//  - Or, with Global_solver::PROJECTED_NEWTON and a measure that has a Hessian in its singular
+//    values, the Newton direction d = -H^-1 g with H the sum of the cells' Hessians projected to be
+//    positive semi-definite (cell_hessian.h): a few conjugate gradient iterations preconditioned
+//    by the last factorization of H, or a new sparse LDL^T factorization (ordering computed once)
+//    when they do not converge; the step is bounded and searched as the Laplacian's, and gives way
+//    to it when it cannot be taken.
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
 //  planes and are projected back onto their surface at every trial; the harmonic start keeps
 //  them where they are.
@@ -22,13 +28,17 @@
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
+#include <CGAL/Distortion_optimization/internal/cell_hessian.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 
 #include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -80,6 +90,31 @@ inline double first_positive_root(double c0, double c1, double c2, double c3, do
   return bound;
 }
 
+// The fill-reducing ordering of a matrix of n x n blocks (the Newton system, n unknowns per
+// vertex): Eigen's approximate minimum degree on the graph of the blocks, each block's unknowns
+// kept together. An n times smaller graph is ordered about n^2 times faster, with less fill.
+template <int n>
+struct Block_AMD_ordering
+{
+  template <class MatrixType>
+  void operator()(const MatrixType& A, Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& permutation) const
+  {
+    const int blocks = static_cast<int>(A.rows()) / n;
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(A.nonZeros()) / (n * n) + 1);
+    for(int j = 0; j < blocks; ++j)
+      for(typename MatrixType::InnerIterator it(A, n * j); it; ++it)
+        if(it.index() % n == 0) entries.emplace_back(static_cast<int>(it.index()) / n, j, 1.);
+    Eigen::SparseMatrix<double> graph(blocks, blocks);
+    graph.setFromTriplets(entries.begin(), entries.end());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> block_permutation;
+    Eigen::AMDOrdering<int>()(graph, block_permutation);
+    permutation.resize(n * blocks);
+    for(int i = 0; i < blocks; ++i)
+      for(int a = 0; a < n; ++a) permutation.indices()[n * i + a] = n * block_permutation.indices()[i] + a;
+  }
+};
+
 template <class State>
 class Global_step
 {
@@ -87,9 +122,12 @@ class Global_step
   using Vec = Vector<n>;
 
 public:
-  explicit Global_step(State& state)
+  // With `newton`, steps take the projected Newton direction where the measure has a Hessian and
+  // no vertex slides (the reweighted Laplacian's otherwise, and where a Newton solve fails).
+  Global_step(State& state, bool newton)
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()),
-      previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)) {}
+      previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)),
+      newton_(newton && measures_internal::Has_hessian<Measure, n>::value && p_.is_sliding.empty()) {}
 
   // The harmonic start (see the file comment), with the cell weights w(c) (for the default
   // weights, the volume-weighted cotangent Laplacian). Skipped where the harmonic map is not
@@ -114,21 +152,35 @@ public:
     return line_search(direction, t, 0.);
   }
 
-  // One preconditioned global step. Returns true if the map changed.
+  // One preconditioned global step. Returns true if the map changed. A Newton step that cannot be
+  // taken (no descent, or no acceptable length) gives way to the Laplacian's in the same call.
   bool step()
   {
+    if(system_.size() == 0) return false;
+    return (newton_ && step_along(true)) || step_along(false);
+  }
+
+private:
+  using Measure = std::decay_t<decltype(std::declval<const State&>().measure())>;
+  using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_AMD_ordering<n>>;
+
+  bool step_along(bool newton)
+  {
     const int size = system_.size();
-    if(size == 0) return false;
-    Eigen::MatrixXd g = Eigen::MatrixXd::Zero(size, n);
-    system_.refill([&](const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) {
-      cell_terms(cells, count, factor, gradient);
-    }, &g, nullptr);
-    Eigen::DiagonalPreconditioner<double> preconditioner;
-    preconditioner.compute(system_.matrix());
-    Eigen::MatrixXd x = previous_solution_;
-    system_.solve(preconditioner, -g, x, 30, 1e-2);
-    if(!x.allFinite()) return false;
-    previous_solution_ = x;
+    Eigen::MatrixXd g = Eigen::MatrixXd::Zero(size, n), x;
+    if(newton) {
+      if(!newton_direction(g, x)) return false;
+    } else {
+      system_.refill([&](const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) {
+        cell_terms(cells, count, factor, gradient);
+      }, &g, nullptr);
+      Eigen::DiagonalPreconditioner<double> preconditioner;
+      preconditioner.compute(system_.matrix());
+      x = previous_solution_;
+      system_.solve(system_.matrix(), preconditioner, -g, x, 30, 1e-2);
+      if(!x.allFinite()) return false;
+      previous_solution_ = x;
+    }
     std::vector<Vec> direction(p_.number_of_vertices(), Vec::Zero());
     for(std::size_t v = 0; v < direction.size(); ++v)
       if(system_.column(v) >= 0) direction[v] = x.row(system_.column(v)).transpose();
@@ -158,15 +210,79 @@ public:
     // P is positive definite (semi-definite with nothing fixed, g then in its range), so only a
     // failed solve gets here.
     if(!(slope < 0)) return false;
-    const double cap = last_t_ > 0 ? 2 * last_t_ : 1.;
+    // The Laplacian's step has no natural length: twice the last accepted one. Newton's is 1, but
+    // far from the minimum barrier-like terms (s^-2) make it short: 2, up to 8 after long steps,
+    // then 1 if that fails.
+    double& last = newton ? last_newton_t_ : last_t_;
+    const double cap = !(last > 0) ? 1. : newton ? std::clamp(2 * last, 2., 8.) : 2 * last;
     double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
-    const bool moved = line_search(direction, t, slope);
-    if(moved) last_t_ = t;
+    const bool moved = line_search(direction, t, slope, newton ? 1. : 0.);
+    if(moved) last = t;
     return moved;
   }
 
-private:
-  using Measure = std::decay_t<decltype(std::declval<const State&>().measure())>;
+  // The projected Newton direction x = -H^-1 g (rows: free vertices) and the gradient g; false
+  // where some moving cell has no finite gradient or the factorization fails.
+  bool newton_direction(Eigen::MatrixXd& g, Eigen::MatrixXd& x)
+  {
+    if constexpr(!measures_internal::Has_hessian<Measure, n>::value) {
+      return false;
+    } else {
+      std::atomic<bool> finite(true);
+      system_.refill_hessian([&](const std::uint32_t* cells, std::size_t count, Cell_hessian<n>* H,
+                                 std::array<Vec, n + 1>* gradient) {
+        for(std::size_t i = 0; i < count; ++i) {
+          const std::uint32_t c = cells[i];
+          if(cell_hessian<n>(state_.measure(), p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) continue;
+          // An inverted or flat cell (where a measure that is not normalized is finite): the
+          // kernel's gradient, and the Laplacian's stiffness in each coordinate.
+          double value;
+          cell_distortions<n>(state_.measure(), p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
+          for(const Vec& v : gradient[i]) finite = finite && v.allFinite();
+          const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
+          const Matrix<n + 1> stiffness = G.transpose() * G;
+          H[i].setZero();
+          for(int a = 0; a <= n; ++a)
+            for(int b = 0; b <= n; ++b) H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
+        }
+      }, &g);
+      if(!finite) return false;
+      const Eigen::SparseMatrix<double>& H = system_.hessian();
+      Eigen::MatrixXd b(H.rows(), 1), solution = Eigen::MatrixXd::Zero(H.rows(), 1);
+      for(int j = 0; j < g.rows(); ++j) b.col(0).template segment<n>(n * j) = -g.row(j).transpose();
+      // An inexact Newton step: conjugate gradients on H preconditioned by the factorization of an
+      // earlier H, to a loose residual; H is factored again when they need many iterations. Far
+      // from the minimum H changes much from step to step: after a failed attempt, the next
+      // 1, 2, 4, ... steps factor at once.
+      bool solved = false;
+      if(factorization_ && skip_lagged_ == 0) {
+        solved = system_.solve(H, *factorization_, b, solution, 6, 1e-3) && solution.allFinite();
+        lagged_failures_ = solved ? 0 : lagged_failures_ + 1;
+        if(!solved) skip_lagged_ = std::size_t(1) << std::min<std::size_t>(lagged_failures_ - 1, 16);
+      } else if(skip_lagged_ > 0) {
+        --skip_lagged_;
+      }
+      if(!solved) {
+        if(!factorization_) {
+          factorization_ = std::make_unique<Factorization>();
+          factorization_->analyzePattern(H);
+        }
+        // A shift of 1e-10 of the mean diagonal keeps H definite where whole modes were dropped or
+        // nothing is fixed (translations).
+        factorization_->setShift(1e-10 * H.diagonal().mean());
+        factorization_->factorize(H);
+        if(factorization_->info() != Eigen::Success) {
+          factorization_.reset();
+          return false;
+        }
+        solution = factorization_->solve(b);
+        if(!solution.allFinite()) return false;
+      }
+      x.resize(g.rows(), n);
+      for(int j = 0; j < g.rows(); ++j) x.row(j) = solution.col(0).template segment<n>(n * j).transpose();
+      return true;
+    }
+  }
 
   // For the Laplacian's refill: each cell's energy gradient and its measure's laplacian_weight.
   void cell_terms(const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) const
@@ -205,8 +321,9 @@ private:
   }
 
   // Backtracks from t along D until the energy decreases (Armijo with the given slope, or any
-  // decrease above rounding if slope is 0) with no valid cell flipped; then commits.
-  bool line_search(const std::vector<Vec>& direction, double& t, double slope)
+  // decrease above rounding if slope is 0) with no valid cell flipped; then commits. After a
+  // first failure above `natural` (> 0), the next trial is `natural` rather than t / 2.
+  bool line_search(const std::vector<Vec>& direction, double& t, double slope, double natural = 0)
   {
     std::vector<Vec>& x = state_.targets();
     const std::vector<Vec> x0 = x;
@@ -215,7 +332,7 @@ private:
     const auto moving_cell = [&](std::size_t i) { return moving[i]; };
     auto* guard = state_.boundary_guard();
     const auto boundary_ok = [&] { return !guard || guard->is_injective(x); };
-    for(int k = 0; k < 30 && t > 0; ++k, t *= 0.5) {
+    for(int k = 0; k < 30 && t > 0; ++k, t = k == 1 && natural > 0 && t > natural ? natural : 0.5 * t) {
       state_.workers().for_each(x.size(), 4096, [&](std::size_t v) {
         if(!p_.is_free[v]) return;
         x[v] = x0[v] + t * direction[v];
@@ -235,7 +352,10 @@ private:
   const Optimization_problem<n>& p_;
   Laplacian_system<n> system_;
   Eigen::MatrixXd previous_solution_;
-  double last_t_ = 0;
+  double last_t_ = 0, last_newton_t_ = 0;   // the last accepted step of each direction
+  bool newton_;
+  std::unique_ptr<Factorization> factorization_;
+  std::size_t lagged_failures_ = 0, skip_lagged_ = 0;   // of the lagged factorization, in a row
 };
 
 } // namespace internal

@@ -18,6 +18,7 @@
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
@@ -72,67 +73,56 @@ public:
   // vertex gradients w(c) dE_c/dx of the free vertices into the rows of g, or the fixed vertices'
   // contribution -P_free,fixed x_fixed into the rows of rhs. `cell_terms(cells, count, factor,
   // gradient)` gives, for the moving cells cells[0..count), f(c) and (when g is asked) the
-  // unweighted vertex gradients; nullptr means f = 1. Block by block of cells, the cells' parts are
-  // computed in parallel, then gathered in parallel by column: column j of P and rows j of g and
-  // rhs take their contributions in cell order, so that every sum has the sequential order
-  // whatever the number of threads.
+  // unweighted vertex gradients; nullptr means f = 1. The sums do not depend on the number of
+  // threads (assemble).
   template <class CellTerms>
   void refill(const CellTerms& cell_terms, Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     constexpr bool unit_factors = std::is_same<CellTerms, std::nullptr_t>::value;
-    std::fill(P_.valuePtr(), P_.valuePtr() + P_.nonZeros(), 0.);
-    std::vector<Eigen::Matrix<double, n + 1, n + 1>> stiffness(std::min(block, moving_cells_.size()));
-    std::vector<std::array<Vec, n + 1>> gradient(g ? stiffness.size() : 0);
-    std::vector<double> factor(stiffness.size(), 1.);
-    for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
-      const std::size_t count = std::min(block, moving_cells_.size() - first);
-      workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
-        if constexpr(!unit_factors)
-          cell_terms(&moving_cells_[first + begin], size, &factor[begin], g ? &gradient[begin] : nullptr);
-        for(std::size_t i = begin; i < begin + size; ++i) {
-          const std::uint32_t c = moving_cells_[first + i];
-          const double w = p_.cell_weight[c];
-          const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
-          stiffness[i] = (w * factor[i]) * (G.transpose() * G);
-          if(g)
-            for(Vec& x : gradient[i]) x = w * x;
-        }
-      });
-      const Block_incidences& incidences = blocks_[first / block];
-      workers_.for_each(incidences.columns.size(), 64, [&](std::size_t t) {
-        const std::uint32_t j = incidences.columns[t];
-        for(std::uint32_t k = incidences.begin[t]; k < incidences.begin[t + 1]; ++k) {
-          const std::uint32_t local = incidences.entries[k] / (n + 1), a = incidences.entries[k] % (n + 1);
-          if(g && gradient[local][a].allFinite())
-            g->row(j) += gradient[local][a].transpose();
-          const int* slot = &slots_[(first + local) * (n + 1) * (n + 1)];
-          for(int b = 0; b <= n; ++b) {
-            const int s = slot[b * (n + 1) + a];   // entry (b, a): row of cell vertex b in column j
-            if(s >= 0) P_.valuePtr()[s] += stiffness[local](b, a);
-          }
-          if(rhs)
-            for(int b = 0; b <= n; ++b)
-              if(slot[a * (n + 1) + b] < 0)   // vertex b is fixed
-                rhs->row(j) -= stiffness[local](a, b) * p_.map.target[p_.map.cells[moving_cells_[first + local]][b]].transpose();
-        }
-      });
-    }
+    std::vector<double> factor(std::min(block, moving_cells_.size()), 1.);
+    assemble<1>(P_, [&](std::size_t begin, const std::uint32_t* cells, std::size_t count,
+                        Eigen::Matrix<double, n + 1, n + 1>* stiffness, std::array<Vec, n + 1>* gradient) {
+      double* f = &factor[begin];
+      if constexpr(!unit_factors) cell_terms(cells, count, f, gradient);
+      for(std::size_t i = 0; i < count; ++i) {
+        const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(cells[i]);
+        stiffness[i] = f[i] * (G.transpose() * G);
+      }
+    }, g, rhs);
   }
+
+  // The projected Newton system: H = sum_c w(c) H_c over the free vertices' coordinates (vertex
+  // v's n unknowns in consecutive rows), with the same sparsity as P in n x n blocks, and, if
+  // asked, the weighted gradient into g as refill does. `cell_hessians(cells, count, hessian,
+  // gradient)` gives each cell's unweighted n(n+1) x n(n+1) Hessian (vertex-major) and vertex gradients.
+  template <class CellHessians>
+  void refill_hessian(const CellHessians& cell_hessians, Eigen::MatrixXd* g)
+  {
+    if(H_.rows() != n * size_) build_block_pattern();
+    assemble<n>(H_, [&](std::size_t, const std::uint32_t* cells, std::size_t count,
+                        Eigen::Matrix<double, n * (n + 1), n * (n + 1)>* hessian, std::array<Vec, n + 1>* gradient) {
+      cell_hessians(cells, count, hessian, gradient);
+    }, g, nullptr);
+  }
+
+  const Eigen::SparseMatrix<double>& hessian() const { return H_; }
 
   const Eigen::SparseMatrix<double>& matrix() const { return P_; }
 
-  // Solves P X = B by preconditioned conjugate gradients (the recurrences of Eigen's
+  // Solves A X = B by preconditioned conjugate gradients (the recurrences of Eigen's
   // conjugate_gradient) from the guess in X, to the given relative residual or number of
-  // iterations. The n columns are independent solves, one per thread; the products with P run by
-  // rows (P is symmetric) on all threads, so that a thread done with its column helps the others.
+  // iterations, with A = P (or the Newton system H, matrix()'s or hessian()'s). The columns are
+  // independent solves, one per thread; the products with A run by rows (A is symmetric) on all
+  // threads, so that a thread done with its column helps the others. Returns false if some column
+  // did not reach the residual within the iterations.
   template <class Preconditioner>
-  void solve(const Preconditioner& preconditioner, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
-             int iterations, double tolerance) const
+  bool solve(const Eigen::SparseMatrix<double>& A, const Preconditioner& preconditioner, const Eigen::MatrixXd& B,
+             Eigen::MatrixXd& X, int iterations, double tolerance) const
   {
-    const std::size_t size = static_cast<std::size_t>(size_);
-    // P's arrays in locals: the compiler cannot otherwise tell that writing pu leaves them alone.
-    const int *outer = P_.outerIndexPtr(), *inner = P_.innerIndexPtr();
-    const double* values = P_.valuePtr();
+    const std::size_t size = static_cast<std::size_t>(A.rows());
+    // A's arrays in locals: the compiler cannot otherwise tell that writing pu leaves them alone.
+    const int *outer = A.outerIndexPtr(), *inner = A.innerIndexPtr();
+    const double* values = A.valuePtr();
     const auto product = [&](const Eigen::VectorXd& u, Eigen::VectorXd& pu) {
       const double* ud = u.data();
       double* pud = pu.data();
@@ -142,7 +132,8 @@ public:
         pud[i] = sum;
       });
     };
-    workers_.for_each(n, 1, [&](std::size_t d) {
+    std::vector<unsigned char> converged(B.cols(), 1);
+    workers_.for_each(B.cols(), 1, [&](std::size_t d) {
       const Eigen::VectorXd b = B.col(d);
       Eigen::VectorXd x = X.col(d), r(size), z(size), p(size), q(size);
       const double b2 = b.squaredNorm();
@@ -156,12 +147,14 @@ public:
       if(r.squaredNorm() < threshold) return;
       p = preconditioner.solve(r);
       double rz = r.dot(p);
-      for(int it = 0; it < iterations; ++it) {
+      converged[d] = 0;
+      for(int it = 0; it < iterations && !converged[d]; ++it) {
         product(p, q);
         const double alpha = rz / p.dot(q);
         x += alpha * p;
         r -= alpha * q;
-        if(r.squaredNorm() < threshold) break;
+        converged[d] = r.squaredNorm() < threshold;
+        if(converged[d]) break;
         z = preconditioner.solve(r);
         const double rz_old = rz;
         rz = r.dot(z);
@@ -169,12 +162,14 @@ public:
       }
       X.col(d) = x;
     });
+    return std::find(converged.begin(), converged.end(), 0) == converged.end();
   }
 
   // The harmonic map: the targets x of the free vertices that minimize sum_c w(c) |J_c|^2 with
-  // the fixed vertices where `targets` has them, by conjugate gradients with an incomplete Cholesky
-  // preconditioner (a direct factorization of a 3D Laplacian fills in badly: tens of seconds at
-  // 400K tetrahedra) from the free vertices' current targets, to harmonic_tolerance. Returns false,
+  // the fixed vertices where `targets` has them: in 2D by a sparse factorization, in 3D by
+  // conjugate gradients with an incomplete Cholesky preconditioner (a direct factorization of a 3D
+  // Laplacian fills in badly: tens of seconds at 400K tetrahedra) from the free vertices' current
+  // targets, to harmonic_tolerance. Returns false,
   // with x unspecified, where the harmonic map is not defined: some set of free vertices is
   // connected to no fixed one (in particular when no vertex is fixed: the minimizers are then the
   // constant maps). Refills P with the unit factors.
@@ -182,22 +177,126 @@ public:
   {
     x = targets;
     if(size_ == 0) return true;
-    if(size_ == static_cast<int>(p_.number_of_vertices())) return false;
+    if(size_ == static_cast<int>(p_.number_of_vertices()) || !every_unknown_reaches_a_known_vertex()) return false;
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(size_, n), X(size_, n);
     refill(nullptr, nullptr, &rhs);
-    Eigen::IncompleteCholesky<double> preconditioner;
-    preconditioner.compute(P_);
-    if(preconditioner.info() != Eigen::Success) return false;
-    for(std::size_t v = 0; v < x.size(); ++v)
-      if(column_[v] >= 0) X.row(column_[v]) = targets[v].transpose();
-    solve(preconditioner, rhs, X, harmonic_iterations, harmonic_tolerance);
-    if(!X.allFinite()) return false;   // a free part with no fixed vertex: P is singular there
+    if constexpr(n == 2) {
+      // A planar Laplacian fills in little: a sparse LDL^T is several times faster than the
+      // conjugate gradients below (lion-head, 8K vertices: about 10 ms against 150 ms).
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(P_);
+      if(factorization.info() != Eigen::Success) return false;
+      X = factorization.solve(rhs);
+    } else {
+      Eigen::IncompleteCholesky<double> preconditioner;
+      preconditioner.compute(P_);
+      if(preconditioner.info() != Eigen::Success) return false;
+      for(std::size_t v = 0; v < x.size(); ++v)
+        if(column_[v] >= 0) X.row(column_[v]) = targets[v].transpose();
+      solve(P_, preconditioner, rhs, X, harmonic_iterations, harmonic_tolerance);
+    }
+    if(!X.allFinite()) return false;
     for(std::size_t v = 0; v < x.size(); ++v)
       if(column_[v] >= 0) x[v] = X.row(column_[v]).transpose();
     return true;
   }
 
 private:
+  // Whether every unknown vertex is joined through cells to a vertex that is not one: where a
+  // part is not, P is singular, and a factorization may see a rounding error for its zero pivot.
+  bool every_unknown_reaches_a_known_vertex() const
+  {
+    std::vector<unsigned char> reached(p_.number_of_vertices(), 0);
+    std::vector<std::uint32_t> stack;
+    for(std::size_t v = 0; v < reached.size(); ++v)
+      if(column_[v] < 0) {
+        reached[v] = 1;
+        stack.push_back(static_cast<std::uint32_t>(v));
+      }
+    while(!stack.empty()) {
+      const std::uint32_t v = stack.back();
+      stack.pop_back();
+      for(std::uint32_t k = p_.ring_begin[v]; k < p_.ring_begin[v + 1]; ++k)
+        for(auto b : p_.map.cells[p_.ring[k].cell])
+          if(!reached[b]) {
+            reached[b] = 1;
+            stack.push_back(b);
+          }
+    }
+    return std::find(reached.begin(), reached.end(), 0) == reached.end();
+  }
+
+  // Fills A (P for k = 1, H for k = n: k unknowns per free vertex) with the weighted cell matrices
+  // w(c) M_c that `cell_matrices(begin, cells, count, M, gradient)` computes for the moving cells
+  // cells[0..count) (at `begin` in their block), and g, rhs as refill() says. Block by block of
+  // cells, the cells' parts are computed in parallel, then gathered in parallel by column: column
+  // j of A and rows j of g and rhs take their contributions in cell order, so that every sum has
+  // the sequential order whatever the number of threads.
+  template <int k, class CellMatrices>
+  void assemble(Eigen::SparseMatrix<double>& A, const CellMatrices& cell_matrices, Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
+  {
+    using Cell_matrix = Eigen::Matrix<double, k * (n + 1), k * (n + 1)>;
+    std::fill(A.valuePtr(), A.valuePtr() + A.nonZeros(), 0.);
+    std::vector<Cell_matrix> local(std::min(block, moving_cells_.size()));
+    std::vector<std::array<Vec, n + 1>> gradient(g ? local.size() : 0);
+    const int* outer = P_.outerIndexPtr();
+    for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
+      const std::size_t count = std::min(block, moving_cells_.size() - first);
+      workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
+        cell_matrices(begin, &moving_cells_[first + begin], size, &local[begin], g ? &gradient[begin] : nullptr);
+        for(std::size_t i = begin; i < begin + size; ++i) {
+          const double w = p_.cell_weight[moving_cells_[first + i]];
+          local[i] *= w;
+          if(g)
+            for(Vec& x : gradient[i]) x = w * x;
+        }
+      });
+      const Block_incidences& incidences = blocks_[first / block];
+      workers_.for_each(incidences.columns.size(), 64, [&](std::size_t t) {
+        const std::uint32_t j = incidences.columns[t];
+        for(std::uint32_t e = incidences.begin[t]; e < incidences.begin[t + 1]; ++e) {
+          const std::uint32_t i = incidences.entries[e] / (n + 1), a = incidences.entries[e] % (n + 1);
+          if(g && gradient[i][a].allFinite())
+            g->row(j) += gradient[i][a].transpose();
+          const int* slot = &slots_[(first + i) * (n + 1) * (n + 1)];
+          for(int b = 0; b <= n; ++b) {
+            const int s = slot[b * (n + 1) + a];   // entry (b, a): row of cell vertex b in column j
+            if(s < 0) continue;
+            // Block (b, a) of the cell's matrix: in column j * k + q of A, the entries of P's
+            // column j come k rows each.
+            const int column_size = outer[j + 1] - outer[j];
+            for(int q = 0; q < k; ++q)
+              for(int r = 0; r < k; ++r)
+                A.valuePtr()[k * k * outer[j] + q * k * column_size + (s - outer[j]) * k + r] += local[i](b * k + r, a * k + q);
+          }
+          if(rhs)
+            for(int b = 0; b <= n; ++b)
+              if(slot[a * (n + 1) + b] < 0)   // vertex b is fixed
+                rhs->row(j) -= local[i](a, b) * p_.map.target[p_.map.cells[moving_cells_[first + i]][b]].transpose();
+        }
+      });
+    }
+  }
+
+  // H's pattern: P's, each entry an n x n block.
+  void build_block_pattern()
+  {
+    const int* outer = P_.outerIndexPtr();
+    const int* inner = P_.innerIndexPtr();
+    H_.resize(n * size_, n * size_);
+    H_.resizeNonZeros(n * n * P_.nonZeros());
+    workers_.for_each(size_, 1024, [&](std::size_t j) {
+      const int column_size = outer[j + 1] - outer[j];
+      for(int q = 0; q < n; ++q) {
+        const int start = n * n * outer[j] + q * n * column_size;
+        H_.outerIndexPtr()[n * j + q] = start;
+        for(int e = 0; e < column_size; ++e)
+          for(int r = 0; r < n; ++r) H_.innerIndexPtr()[start + e * n + r] = n * inner[outer[j] + e] + r;
+      }
+    });
+    H_.outerIndexPtr()[n * size_] = n * n * P_.nonZeros();
+    std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
+  }
+
   // The sparsity pattern of the free-free block, and for each cell and pair of its free vertices
   // the slot of their entry, so that refills only rewrite values.
   void build_pattern()
@@ -272,7 +371,7 @@ private:
   std::vector<std::uint32_t> column_vertex_;   // column_'s inverse
   int size_ = 0;
   std::vector<std::uint32_t> moving_cells_;
-  // refill's blocks of moving cells, small enough for their parts to stay in the L2 cache, and
+  // assemble's blocks of moving cells, small enough for their Laplacian parts to stay in the L2 cache, and
   // for each block the incidences of its cells' free vertices: the columns of P they fall in and,
   // per column, (position of the cell in the block) * (n + 1) + (the vertex's place in the cell)
   static constexpr std::size_t block = 8192;
@@ -281,7 +380,7 @@ private:
     std::vector<std::uint32_t> columns, begin, entries;
   };
   std::vector<Block_incidences> blocks_;
-  Eigen::SparseMatrix<double> P_;
+  Eigen::SparseMatrix<double> P_, H_;
   std::vector<int> slots_;
 };
 

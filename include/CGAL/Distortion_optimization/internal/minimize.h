@@ -74,7 +74,7 @@ public:
       (guard_ && guard_->is_on_boundary(v) ? guarded_vertices_ : parallel_vertices_).push_back(v);
     if(guard_) state.set_boundary_guard(guard_.get());
     if(options.schedule != Schedule::LOCAL || options.harmonic_start)
-      global_step_ = std::make_unique<Global_step<State>>(state);
+      global_step_ = std::make_unique<Global_step<State>>(state, global_solver_for<n>(options) == Global_solver::PROJECTED_NEWTON);
   }
 
   // After the targets were replaced from outside the steps (untangling restores a better map).
@@ -151,7 +151,7 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
     // one by its own rounding when an iteration gains less than that: keep the smaller.
     energy = std::min(previous, state.energy() * normalization);
     result.energy_per_iteration.push_back(energy);
-    if(options.visitor && !options.visitor(result.iterations, energy)) {
+    if(options.visitor && !options.visitor(result.iterations, energy, state.number_of_inverted_cells())) {
       result.stopped_by_visitor = true;
       break;
     }

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -39,9 +40,21 @@ struct Options
   bool global_injectivity = false;   // guard the boundary of free boundary vertices
   int threads = 1;
   Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
-  std::function<bool(std::size_t, double)> visitor;   // (iteration, energy) -> continue?
+  // Unset: Newton for triangle meshes, the Laplacian for tetrahedral ones (global_solver_for).
+  std::optional<Global_solver> global_solver;
+  // (iteration, energy, inverted cells) -> continue? While untangling, the energy is the barrier's.
+  std::function<bool(std::size_t, double, std::size_t)> visitor;
   bool untangle_first = false;
 };
+
+// The global step's solver of a run in dimension n: a sparse factorization of the Newton system
+// fills in little for triangle meshes, and far too much for tetrahedral ones (27 s against 0.25 s
+// for the Laplacian's step on bench_table1's 48K-tet stretch, symmetric Dirichlet).
+template <int n>
+Global_solver global_solver_for(const Options& options)
+{
+  return options.global_solver.value_or(n == 2 ? Global_solver::PROJECTED_NEWTON : Global_solver::REWEIGHTED_LAPLACIAN);
+}
 
 template <class NamedParameters>
 Options read_options(const NamedParameters& np)
@@ -57,12 +70,21 @@ Options read_options(const NamedParameters& np)
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   o.global_injectivity = choose_parameter(get_parameter(np, internal_np::preserve_global_injectivity), o.global_injectivity);
   o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
+  auto solver = get_parameter(np, internal_np::global_solver);
+  if constexpr(!std::is_same<decltype(solver), CGAL::internal_np::Param_not_found>::value)
+    o.global_solver = solver;   // a Global_solver, or a std::optional of one (empty: the default)
   o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
                                       o.schedule != Schedule::LOCAL);
   o.untangle_first = choose_parameter(get_parameter(np, internal_np::untangle_first), o.untangle_first);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    o.visitor = [visitor](std::size_t iteration, double energy) { return static_cast<bool>(visitor(iteration, energy)); };
+    o.visitor = [visitor](std::size_t iteration, double energy, std::size_t inverted) {
+      // The user's visitor takes the inverted cells' count only if it wants it.
+      if constexpr(std::is_invocable<const std::decay_t<decltype(visitor)>&, std::size_t, double, std::size_t>::value)
+        return static_cast<bool>(visitor(iteration, energy, inverted));
+      else
+        return static_cast<bool>(visitor(iteration, energy));
+    };
   if(o.threads < 0)
     throw Invalid_input("the number of threads must be 0 (all) or positive");
   if(!(o.threshold >= 0))

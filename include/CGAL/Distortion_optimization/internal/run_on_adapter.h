@@ -13,6 +13,8 @@
 #include <CGAL/Distortion_optimization/internal/named_parameters.h>
 #include <CGAL/Distortion_optimization/internal/untangle.h>
 
+#include <limits>
+
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
@@ -27,10 +29,25 @@ Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measu
   if(options.untangle_first) {
     Options untangle_options = options;
     untangle_options.iterations = default_untangle_rounds;
-    untangle_options.visitor = nullptr;
     untangled = untangle(problem, adapter.traits, untangle_options);
   }
-  Result result = minimize(problem, measure, adapter.traits, options);
+  Result result;
+  if(untangled.stopped_by_visitor && untangled.inverted_after > 0) {
+    // Stopped while cells are still inverted: the measure may be infinite there, so the energies
+    // are not numbers and the map is the untangler's last.
+    result.initial_energy = result.final_energy = std::numeric_limits<double>::quiet_NaN();
+    result.inverted_cells = untangled.inverted_after;
+    result.stopped_by_visitor = true;
+  } else if(untangled.stopped_by_visitor) {
+    // Stopped at the round that untangled the map: its energy, no iteration.
+    Options evaluate = options;
+    evaluate.iterations = 0;
+    evaluate.harmonic_start = false;
+    result = minimize(problem, measure, adapter.traits, evaluate);
+    result.stopped_by_visitor = true;
+  } else {
+    result = minimize(problem, measure, adapter.traits, options);
+  }
   if(untangled.inverted_before > 0) result.inverted_start_cells = untangled.inverted_before;
   result.untangle_iterations = untangled.iterations;
   result.untangle_seconds = untangled.seconds;

@@ -223,7 +223,8 @@ std::size_t barrier_descent(Optimization_problem<n>& p, Barrier_energy<n>& energ
 // Untangles problem.map in place (the whole map; untangle() below first tries the tangle's
 // surroundings). options.iterations bounds the rounds (values of eps); a round minimizes the
 // barrier for its eps (barrier_descent, at most 1000 steps, 200 in a part); the visitor is called after each
-// round with the round and the number of cells still inverted, and may stop the run there. Throws
+// round with the round, the mean barrier energy and the number of cells still inverted, and may
+// stop the run there. Throws
 // Invalid_input, with the map unchanged, when some inverted cell has only constrained vertices, or
 // when the rounds end with inverted cells (no injective map may exist with these constraints).
 template <int n, class GeomTraits>
@@ -274,7 +275,8 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
     const double after = energy(barrier, nullptr);
     const std::size_t inverted_before = report.inverted_after;
     report.inverted_after = tangled();
-    if(options.visitor && !options.visitor(report.iterations, static_cast<double>(report.inverted_after))) {
+    const double weight = problem.total_weight > 0 ? problem.total_weight : 1.;
+    if(options.visitor && !options.visitor(report.iterations, after / weight, report.inverted_after)) {
       report.stopped_by_visitor = true;
       break;
     }
@@ -319,6 +321,17 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   return report;
 }
 
+// The options with a visitor that numbers its rounds after the `done` ones already reported.
+inline Options continuing(const Options& options, std::size_t done)
+{
+  Options o = options;
+  if(o.visitor)
+    o.visitor = [visitor = options.visitor, done](std::size_t round, double energy, std::size_t inverted) {
+      return visitor(done + round, energy, inverted);
+    };
+  return o;
+}
+
 // Untangles problem.map in place without the boundary guard, as untangle_everywhere(). A few
 // inverted cells in a large map (the tangles of a deformation, the flat cells a ball map leaves
 // along the sharp edges of a domain) are first untangled in the part of the map within one ring
@@ -361,7 +374,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
     std::vector<std::uint32_t> global;
     Optimization_problem<n> part = part_of(problem, region, global);
     if(2 * part.map.number_of_cells() > problem.map.number_of_cells()) break;   // hardly smaller than the map
-    const Untangle_report r = untangle_everywhere(part, traits, options, false);
+    const Untangle_report r = untangle_everywhere(part, traits, continuing(options, report.iterations), false);
     for(std::size_t i = 0; i < global.size(); ++i) problem.map.target[global[i]] = part.map.target[i];
     report.iterations += r.iterations;
     report.inverted_after = r.inverted_after;
@@ -370,7 +383,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
   }
   if(report.inverted_after > 0 && !report.stopped_by_visitor) {
     try {
-      const Untangle_report r = untangle_everywhere(problem, traits, options);
+      const Untangle_report r = untangle_everywhere(problem, traits, continuing(options, report.iterations));
       report.iterations += r.iterations;
       report.inverted_after = r.inverted_after;
       report.stopped_by_visitor = r.stopped_by_visitor;
@@ -398,6 +411,12 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
   const std::vector<Vector<n>> start_targets = problem.map.target;
   Options unguarded = options;
   unguarded.global_injectivity = false;
+  // The rounds reported so far, also when the attempt throws: the guarded run numbers after them.
+  std::size_t rounds = 0;
+  unguarded.visitor = [&rounds, visitor = options.visitor](std::size_t round, double energy, std::size_t inverted) {
+    rounds = round;
+    return !visitor || visitor(round, energy, inverted);
+  };
   Untangle_report report;
   try {
     report = untangle_in_parts(problem, traits, unguarded);
@@ -409,8 +428,8 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     report.inverted_after = report.inverted_before;
     return report;
   }
-  const std::size_t unguarded_rounds = report.iterations;
-  report = untangle_everywhere(problem, traits, options);
+  const std::size_t unguarded_rounds = std::max(report.iterations, rounds);
+  report = untangle_everywhere(problem, traits, continuing(options, unguarded_rounds));
   report.iterations += unguarded_rounds;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
