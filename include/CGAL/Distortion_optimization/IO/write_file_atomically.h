@@ -11,14 +11,17 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <charconv>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <locale>
 #include <ostream>
 #include <string>
 
@@ -137,9 +140,28 @@ inline void remove_temporary_files_on_signals()
   for(int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, internal::unlink_temporaries_and_reraise);
 }
 
+namespace internal {
+
+// Formats each double inserted into a stream as the shortest decimal that reads back to the
+// same value (std::to_chars): several times faster than the 17 significant digits of printf-style
+// formatting, and shorter. Stream precision and flags do not apply.
+class Shortest_double_put : public std::num_put<char>
+{
+protected:
+  iter_type do_put(iter_type out, std::ios_base&, char, double x) const override
+  {
+    char buffer[32];
+    const char* end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+    return std::copy(static_cast<const char*>(buffer), end, out);
+  }
+};
+
+} // namespace internal
+
 /// \ingroup PkgDistortionOptimizationIO
 /// Writes a file whole or not at all: `write(stream)` fills a `Temporary_file` beside `path`,
-/// which is renamed to `path` only when everything was written. No other file is touched.
+/// which is renamed to `path` only when everything was written. No other file is touched. The
+/// stream writes each `double` as the shortest decimal that reads back to the same value.
 /// \throws Invalid_input if the file cannot be written (the temporary file is removed).
 inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write)
 {
@@ -147,7 +169,7 @@ inline void write_file_atomically(const std::string& path, const std::function<v
   {
     std::ofstream out(temporary.path(), std::ios::binary | std::ios::trunc);
     if(!out) throw Invalid_input(path + ": cannot write (is the folder writable?)");
-    out.precision(17);
+    out.imbue(std::locale(std::locale::classic(), new internal::Shortest_double_put));
     write(out);
     out.flush();
     if(!out) throw Invalid_input(path + ": write error");

@@ -178,6 +178,12 @@ private:
       preconditioner.compute(system_.matrix());
       x = previous_solution_;
       system_.solve(system_.matrix(), preconditioner, -g, x, 30, 1e-2);
+      // Cut short, conjugate gradients from the last step's solution may not descend (a run
+      // then ends as if converged); from 0 every iterate does: g.x < -x.Px / 2 < 0.
+      if(!x.allFinite() || !((g.array() * x.array()).sum() < 0)) {
+        x.setZero();
+        system_.solve(system_.matrix(), preconditioner, -g, x, 30, 1e-2);
+      }
       if(!x.allFinite()) return false;
       previous_solution_ = x;
     }

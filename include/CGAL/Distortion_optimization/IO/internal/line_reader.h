@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <istream>
@@ -95,10 +96,14 @@ inline std::string printable(const std::string& text)
 }
 
 // Whether `token` is entirely a number as strtod reads it (integers, reals, infinities, NaN): a
-// NUL or other byte after the number makes it not one.
+// NUL or other byte after the number makes it not one. std::from_chars reads the decimal forms
+// several times faster (and to the same double: both round correctly); strtod takes what it
+// does not (a leading '+', hexadecimal).
 inline bool parse_number(const std::string& token, double& x)
 {
   const char* begin = token.c_str();
+  const std::from_chars_result fast = std::from_chars(begin, begin + token.size(), x);
+  if(fast.ec == std::errc() && fast.ptr == begin + token.size()) return true;
   char* end = nullptr;
   errno = 0;
   x = std::strtod(begin, &end);
@@ -210,9 +215,11 @@ private:
   // The whitespace of the "C" locale, as istream's >> splits.
   static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
 
+  // Into the strings `tokens` already has, whose memory the lines before left them: no allocation
+  // per token once the lines are alike.
   void split(std::vector<std::string>& tokens) const
   {
-    tokens.clear();
+    std::size_t count = 0;
     for(std::size_t i = 0; i < line_.size();) {
       if(is_space(line_[i])) {
         ++i;
@@ -220,8 +227,11 @@ private:
       }
       const std::size_t begin = i;
       while(i < line_.size() && !is_space(line_[i])) ++i;
-      tokens.emplace_back(line_, begin, i - begin);
+      if(count < tokens.size()) tokens[count].assign(line_, begin, i - begin);
+      else tokens.emplace_back(line_, begin, i - begin);
+      ++count;
     }
+    tokens.resize(count);
   }
 
   std::istream& in_;
