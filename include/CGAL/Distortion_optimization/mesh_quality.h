@@ -344,6 +344,15 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
     \cgalParamDefault{`Distortion_optimization::Schedule::ALTERNATING`}
   \cgalParamNEnd
 
+  \cgalParamNBegin{global_solver}
+    \cgalParamDescription{the system that gives the direction of a global step
+                          (`Distortion_optimization::parameters::global_solver()`)}
+    \cgalParamType{`Distortion_optimization::Global_solver`}
+    \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON` for a triangle mesh,
+                      `Distortion_optimization::Global_solver::REWEIGHTED_LAPLACIAN` for a complex}
+    \cgalParamExtra{Newton steps apply to measures with a `hessian()` (not to the default `Conformal_dilatation`).}
+  \cgalParamNEnd
+
   \cgalParamNBegin{use_harmonic_start}
     \cgalParamDescription{if `true`, the run starts from the harmonic map of the fixed vertices (from the ideal cells)
                           when it is valid and better, or from the best safe point towards it
