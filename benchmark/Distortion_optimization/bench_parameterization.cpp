@@ -249,7 +249,8 @@ void run(const std::string& filename)
         }
         double below = std::numeric_limits<double>::quiet_NaN();   // never, or no SLIM figure
         for(auto it = trace.rbegin(); fixed && slim > 0 && it != trace.rend() && it->second <= slim; ++it) below = it->first;
-        std::printf(" %10zu %8.3fs\n", trace.size(), below);
+        if(std::isnan(below)) std::printf(" %10zu %9s\n", trace.size(), "-");
+        else std::printf(" %10zu %8.3fs\n", trace.size(), below);
         std::fflush(stdout);
       }
 }
