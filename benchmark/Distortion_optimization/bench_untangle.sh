@@ -5,7 +5,8 @@
 # optimization that follows, and the final energy (K for tetrahedra, symmetric Dirichlet for
 # triangles). Anchored vertices (the *_anchors.txt files) are fixed; the planar and UV cases have a
 # free boundary: the elephants' boundaries cross (the tool then warns and runs without the guard),
-# the octopus UV's does not (the guard keeps it so).
+# the octopus UV's does not (the guard keeps it so; the guarded rounds leave ears inverted and the
+# untangler starts again from Tutte's embedding).
 #
 #   bash benchmark/Distortion_optimization/bench_untangle.sh [data_dir [threads]]
 #   (default data dir: ../shared/data/abcd beside the repository; run after scripts/test.sh)

@@ -28,6 +28,19 @@ struct Tangled_grid : Noisy_map
   explicit Tangled_grid(double noise, unsigned seed = 1) : Noisy_map([](const Point_2& p) { return p; }, noise, seed) {}
 };
 
+// CGAL's ARAP parameterization of lion-head (the longest border free) into uv; returns the
+// number of flipped triangles (0 with a test failure if it cannot be made).
+template <class UV>
+std::size_t arap_lion_head(Mesh3& mesh, UV uv)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", mesh));
+  const auto status = SMP::parameterize(mesh, SMP::ARAP_parameterizer_3<Mesh3>(),
+                                        CGAL::Polygon_mesh_processing::longest_border(mesh).first, uv);
+  EXPECT_EQ(status, SMP::OK);
+  return status == SMP::OK ? count_flipped(mesh, uv) : 0;
+}
+
 } // namespace
 
 TEST(Untangle, TangledGridsWithAFixedBoundaryBecomeInjective)
@@ -158,13 +171,9 @@ TEST(Untangle, NoInjectiveMapGivesAnErrorAndLeavesTheMapUnchanged)
 // still does not, and minimize_distortion(untangle_first) then optimizes from there.
 TEST(Untangle, CgalArapOutputOfARealDiskIsUntangledWithAFreeBorder)
 {
-  namespace SMP = CGAL::Surface_mesh_parameterization;
   Mesh3 mesh;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", mesh));
   auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
-  ASSERT_EQ(SMP::parameterize(mesh, SMP::ARAP_parameterizer_3<Mesh3>(), CGAL::Polygon_mesh_processing::longest_border(mesh).first, uv),
-            SMP::OK);
-  const std::size_t flipped = count_flipped(mesh, uv);
+  const std::size_t flipped = arap_lion_head(mesh, uv);
   ASSERT_GT(flipped, 10u);
   ASSERT_EQ(border_self_intersections(mesh, uv), 0u);
   auto none = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
@@ -186,4 +195,52 @@ TEST(Untangle, CgalArapOutputOfARealDiskIsUntangledWithAFreeBorder)
   EXPECT_EQ(border_self_intersections(mesh, uv), 0u);
   EXPECT_NEAR(brute_force_energy(mesh, uv, "symmetric_dirichlet"), m.final_energy, 1e-9 * m.final_energy);
   EXPECT_LT(m.final_energy, 2.);   // a Tutte start reaches about 1.6 with a free border
+}
+
+// When the rounds end with triangles inverted (here: one round allowed, on CGAL's ARAP map of
+// lion-head), a disk with at most two constrained vertices is untangled from its Tutte
+// embedding: every triangle valid, the border on a circle and uncrossed, the constrained
+// vertices where they were. With three constrained vertices that does not apply: an error, the
+// map unchanged.
+TEST(Untangle, ADiskWhoseRoundsEndTangledStartsAgainFromItsTutteEmbedding)
+{
+  Mesh3 mesh;
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  const std::size_t flipped = arap_lion_head(mesh, uv);
+  ASSERT_GT(flipped, 10u);
+  const std::vector<Point_2> start = targets_of(mesh, uv);
+  std::vector<Mesh3::Vertex_index> border;
+  for(auto h : mesh.halfedges())
+    if(mesh.is_border(h)) border.push_back(mesh.target(h));
+  ASSERT_GT(border.size(), 30u);
+  auto pinned = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:pinned", false).first;
+
+  for(std::size_t pins : {0, 2, 3}) {
+    for(auto v : mesh.vertices()) uv[v] = start[v.idx()], pinned[v] = false;
+    for(std::size_t i = 0; i < pins; ++i) pinned[border[i * border.size() / 3]] = true;
+    const auto untangle = [&] {
+      return DO::untangle(mesh, uv, DO::parameters::preserve_global_injectivity(true)
+                                      .vertex_is_constrained_map(pinned).number_of_iterations(1));
+    };
+    if(pins == 3) {
+      EXPECT_THROW(untangle(), DO::Invalid_input);
+      EXPECT_EQ(targets_of(mesh, uv), start);
+      continue;
+    }
+    const DO::Untangle_result r = untangle();
+    EXPECT_EQ(r.inverted_before, flipped) << pins << " pins";
+    EXPECT_EQ(r.inverted_after, 0u);
+    EXPECT_EQ(count_flipped(mesh, uv), 0u);
+    EXPECT_EQ(border_self_intersections(mesh, uv), 0u);
+    for(auto v : mesh.vertices()) {
+      if(pinned[v]) {
+        EXPECT_EQ(uv[v], start[v.idx()]);
+      }
+    }
+    // On a circle: every border vertex as far from the circumcentre of three of them.
+    const Point_2 centre = CGAL::circumcenter(uv[border[0]], uv[border[border.size() / 3]], uv[border[2 * border.size() / 3]]);
+    const double radius = std::sqrt(CGAL::squared_distance(centre, uv[border[0]]));
+    EXPECT_GT(radius, 0.);
+    for(auto v : border) EXPECT_NEAR(std::sqrt(CGAL::squared_distance(centre, uv[v])), radius, 1e-9 * radius);
+  }
 }

@@ -32,6 +32,11 @@ kernel and threads; only the barrier keeps cells from folding, so that a fold ca
 flat states. Constrained vertices never move, and with `preserve_global_injectivity` a
 boundary that does not cross itself never starts to. Every orientation is decided by the
 `geom_traits`' exact predicates.
+When the rounds end with triangles still inverted and `tm` is a disk (one boundary loop) with at
+most two constrained vertices, the untangling starts again from Tutte's embedding of `tm` (the
+boundary on a circle, each inner vertex the mean of its neighbours), moved by a similarity onto the
+constrained vertices: an injective map, for folds no descent opens (an ear of a free boundary
+turned inside out).
 Use `CGAL::minimize_distortion()` afterwards (or its named parameter `untangle_first`) to optimize
 a measure from the untangled map.
 
@@ -142,8 +147,8 @@ a measure from the untangled map.
 \throws Distortion_optimization::Invalid_input, leaving `target` unchanged, for the input
 `CGAL::compute_distortion()` rejects, non-positive or non-finite vertex weights, a negative number
 of threads, an inverted cell whose vertices are all constrained, and when inverted cells remain
-after the rounds (the constraints may admit no injective map: e.g. a fixed boundary that crosses
-itself); the message gives the number of cells still inverted.
+after the rounds when Tutte's embedding does not apply (the constraints may admit no injective map:
+e.g. a fixed boundary that crosses itself); the message gives the number of cells still inverted.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
 `preserve_global_injectivity` when the boundary of the start map crosses itself.
 */

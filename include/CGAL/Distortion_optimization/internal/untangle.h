@@ -28,6 +28,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/internal/minimize.h>
+#include <CGAL/Distortion_optimization/internal/tutte_embedding.h>
 
 #include <algorithm>
 #include <chrono>
@@ -332,6 +333,17 @@ inline Options continuing(const Options& options, std::size_t done)
   return o;
 }
 
+// The options with a visitor that also records the last round it was called with in `rounds`.
+inline Options recording_rounds(const Options& options, std::size_t& rounds)
+{
+  Options o = options;
+  o.visitor = [&rounds, visitor = options.visitor](std::size_t round, double energy, std::size_t inverted) {
+    rounds = round;
+    return !visitor || visitor(round, energy, inverted);
+  };
+  return o;
+}
+
 // Untangles problem.map in place without the boundary guard, as untangle_everywhere(). A few
 // inverted cells in a large map (the tangles of a deformation, the flat cells a ball map leaves
 // along the sharp edges of a domain) are first untangled in the part of the map within one ring
@@ -403,7 +415,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
 // cells squeezed there stay inverted with the guard and open without it, the boundary uncrossed.
 // Only when the boundary then crosses does the guarded run start again from the start map.
 template <int n, class GeomTraits>
-Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+Untangle_report untangle_from_start(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);   // throws if the start crosses
   if(!guard) return untangle_in_parts(problem, traits, options);
@@ -413,10 +425,7 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
   unguarded.global_injectivity = false;
   // The rounds reported so far, also when the attempt throws: the guarded run numbers after them.
   std::size_t rounds = 0;
-  unguarded.visitor = [&rounds, visitor = options.visitor](std::size_t round, double energy, std::size_t inverted) {
-    rounds = round;
-    return !visitor || visitor(round, energy, inverted);
-  };
+  unguarded = recording_rounds(unguarded, rounds);
   Untangle_report report;
   try {
     report = untangle_in_parts(problem, traits, unguarded);
@@ -433,6 +442,44 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
   report.iterations += unguarded_rounds;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
+}
+
+// Untangles problem.map in place (untangle_from_start()), or when that fails on a planar disk
+// with at most two constrained vertices, from its Tutte embedding (tutte_embedding.h): an
+// injective map that is untangled already unless rounding left cells flat. Throws as
+// untangle_everywhere() when neither applies or succeeds, the map unchanged.
+template <int n, class GeomTraits>
+Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t rounds = 0;   // the last round reported, numbered over all attempts
+  try {
+    return untangle_from_start(problem, traits, recording_rounds(options, rounds));
+  } catch(const Crossing_start_boundary&) {
+    throw;
+  } catch(const Invalid_input&) {
+    std::vector<Vector<n>> tutte;
+    if constexpr(n == 2) {
+      if(!tutte_embedding(problem, typical_jacobian_determinant(problem.map), tutte)) throw;
+    } else {
+      throw;
+    }
+    std::size_t inverted_before = 0;   // of the start map, which the failed attempt restored
+    for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c) inverted_before += is_tangled(problem.map, c, traits);
+    const std::vector<Vector<n>> start_targets = problem.map.target;
+    problem.map.target = tutte;
+    Untangle_report report;
+    try {
+      report = untangle_everywhere(problem, traits, continuing(options, rounds));
+    } catch(const Invalid_input&) {
+      problem.map.target = start_targets;
+      throw;
+    }
+    report.inverted_before = inverted_before;
+    report.iterations += rounds;
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+  }
 }
 
 } // namespace internal

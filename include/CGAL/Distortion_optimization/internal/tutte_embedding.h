@@ -1,0 +1,147 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Tutte's embedding of a triangulated disk: the boundary on a circle, in order, spaced by the
+// source's edge lengths, and each inner vertex the mean of its neighbours (Tutte, "How to draw a
+// graph", 1963; Floater, "Parametrization and smooth approximation of surface triangulations",
+// 1997). It is injective with every triangle positively oriented (in exact arithmetic), whatever
+// the start: the untangler's last resort for a map with a free boundary when the boundary guard
+// holds a fold in place. An ear of the boundary turned inside out (a tentacle tip of the ABCD
+// octopus) can only come right by moving far through the outside, which no descent on the
+// barrier finds; with the boundary guard it stays inverted.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
+
+#include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// Tutte's embedding of p's mesh into x, scaled to the area p's cells have at det J =
+// `typical_det`, then moved by the similarity that puts p's constrained vertices (at most two)
+// back on their targets. Returns false, x unspecified, where it does not apply: the mesh is not a
+// disk (one boundary loop through every boundary vertex, Euler characteristic 1), more than two
+// vertices are constrained, two constrained vertices share a target, or the solve fails.
+inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det, std::vector<Vector<2>>& x)
+{
+  const std::size_t nv = p.number_of_vertices(), nc = p.map.number_of_cells();
+  std::vector<std::uint32_t> constrained;
+  for(std::uint32_t v = 0; v < nv; ++v)
+    if(!p.is_free[v]) constrained.push_back(v);
+  if(constrained.size() > 2 || !p.is_sliding.empty() || nc == 0) return false;
+
+  // Edges as (smaller vertex, larger vertex, cell, position of the edge's first vertex in it).
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, int>> edges;
+  for(std::uint32_t c = 0; c < nc; ++c)
+    for(int i = 0; i < 3; ++i) {
+      const auto a = p.map.cells[c][i], b = p.map.cells[c][(i + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b), c, i);
+    }
+  std::sort(edges.begin(), edges.end());
+  // Boundary edges, directed so that their cell lies on their left once it keeps its orientation.
+  std::vector<std::int64_t> next(nv, -1);
+  std::vector<double> length(nv, 0);
+  std::vector<std::vector<std::uint32_t>> neighbours(nv);
+  std::size_t number_of_edges = 0, boundary_edges = 0;
+  for(std::size_t i = 0, j; i < edges.size(); i = j) {
+    for(j = i + 1; j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
+                   std::get<1>(edges[j]) == std::get<1>(edges[i]); ++j) {}
+    const auto [u, w, c, k] = edges[i];
+    ++number_of_edges;
+    neighbours[u].push_back(w), neighbours[w].push_back(u);
+    if(j - i > 2) return false;   // a non-manifold edge
+    if(j - i == 2) continue;
+    auto a = p.map.cells[c][k], b = p.map.cells[c][(k + 1) % 3];
+    if(p.map.rest_sign[c] < 0) std::swap(a, b);
+    if(next[a] >= 0) return false;   // two boundary loops meet at a
+    next[a] = b;
+    // The source edge's length, from the cell's rest shape: vertex 0 at the origin, vertex i at Dm's column i - 1.
+    const Matrix<2> Dm = p.map.inverse_rest[c].inverse();
+    const auto rest = [&](int m) { return m == 0 ? Vector<2>::Zero().eval() : Vector<2>(Dm.col(m - 1)); };
+    length[a] = (rest((k + 1) % 3) - rest(k)).norm();
+    ++boundary_edges;
+  }
+  if(boundary_edges == 0 || nv + nc != number_of_edges + 1) return false;
+  std::vector<std::uint32_t> loop;
+  double perimeter = 0;
+  const auto start = static_cast<std::uint32_t>(std::find_if(next.begin(), next.end(), [](std::int64_t w) { return w >= 0; }) - next.begin());
+  for(std::uint32_t v = start; loop.size() <= boundary_edges;) {
+    loop.push_back(v);
+    perimeter += length[v];
+    if(next[v] < 0) return false;
+    v = static_cast<std::uint32_t>(next[v]);
+    if(v == start) break;
+  }
+  if(loop.size() != boundary_edges || !(perimeter > 0)) return false;   // more than one loop
+
+  // The circle, of the area the cells cover at the typical determinant.
+  double area = 0;
+  for(double a : p.map.rest_volume) area += a;
+  const double radius = std::sqrt(area * typical_det / M_PI);
+  x.assign(nv, Vector<2>::Zero());
+  std::vector<int> column(nv, -1);
+  double arc = 0;
+  for(std::uint32_t v : loop) {
+    const double angle = 2 * M_PI * arc / perimeter;
+    x[v] = radius * Vector<2>(std::cos(angle), std::sin(angle));
+    arc += length[v];
+    column[v] = -2;
+  }
+  int size = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(column[v] == -1) column[v] = size++;
+  if(size > 0) {
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(size, 2);
+    for(std::size_t v = 0; v < nv; ++v) {
+      if(column[v] < 0) continue;
+      entries.emplace_back(column[v], column[v], double(neighbours[v].size()));
+      for(std::uint32_t w : neighbours[v])
+        if(column[w] >= 0) entries.emplace_back(column[v], column[w], -1.);
+        else rhs.row(column[v]) += x[w].transpose();
+    }
+    Eigen::SparseMatrix<double> L(size, size);
+    L.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(L);
+    if(factorization.info() != Eigen::Success) return false;
+    const Eigen::MatrixXd X = factorization.solve(rhs);
+    if(!X.allFinite()) return false;
+    for(std::size_t v = 0; v < nv; ++v)
+      if(column[v] >= 0) x[v] = X.row(column[v]).transpose();
+  }
+
+  // The similarity (rotation, scale, translation: orientations kept) back to the constrained targets.
+  if(constrained.size() == 2) {
+    const Vector<2> from = x[constrained[1]] - x[constrained[0]];
+    const Vector<2> to = p.map.target[constrained[1]] - p.map.target[constrained[0]];
+    if(!(to.norm() > 0) || !(from.norm() > 0)) return false;
+    const std::complex<double> z = std::complex<double>(to[0], to[1]) / std::complex<double>(from[0], from[1]);
+    const Vector<2> origin = x[constrained[0]];
+    for(Vector<2>& y : x) {
+      const std::complex<double> r = z * std::complex<double>(y[0] - origin[0], y[1] - origin[1]);
+      y = p.map.target[constrained[0]] + Vector<2>(r.real(), r.imag());
+    }
+  } else if(constrained.size() == 1) {
+    const Vector<2> shift = p.map.target[constrained[0]] - x[constrained[0]];
+    for(Vector<2>& y : x) y += shift;
+  }
+  for(std::uint32_t v : constrained) x[v] = p.map.target[v];   // bit-identical
+  return true;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
