@@ -117,8 +117,10 @@ std::string usage()
   "  --report     also write the results as JSON\n"
   "  --untangle   when the start has inverted or flat cells, untangle it first (then optimize);\n"
   "               without it such a start is refused under a measure infinite there\n"
-  "  --schedule   alternating (default: a local sweep then a global step per iteration, after a\n"
-  "               harmonic start), local (the paper's sweeps only) or global\n"
+  "  --schedule   alternating (a local sweep then a global step per iteration, after a harmonic\n"
+  "               start: the default with laplacian global steps), global (a global step per\n"
+  "               iteration, and a local sweep when it gains too little: the default with\n"
+  "               newton ones) or local (the paper's sweeps only)\n"
   "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
   "               seconds); the default when stderr is a terminal; --quiet: none\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
@@ -133,7 +135,7 @@ struct Usage_error : std::runtime_error
 struct Command_line
 {
   std::string source, target, output, measure = DO::measure_names()[0], fix = "boundary", solver = "gd", report,
-    schedule = "alternating";
+    schedule;   // empty: the library's default
   std::size_t iterations = 100, threads = 1;
   double threshold = 1e-4;
   bool untangle = false;
@@ -309,7 +311,7 @@ Command_line parse(int argc, char** argv)
   if(c.output.empty()) throw Usage_error("--output is required");
   if(c.solver != "gd" && c.solver != "bfgs") throw Usage_error("--solver is gd or bfgs, not '" + c.solver + "'");
   if(c.threads == 0) throw Usage_error("--threads must be at least 1");
-  if(c.schedule != "alternating" && c.schedule != "local" && c.schedule != "global")
+  if(!c.schedule.empty() && c.schedule != "alternating" && c.schedule != "local" && c.schedule != "global")
     throw Usage_error("--schedule is alternating, local or global, not '" + c.schedule + "'");
   if(!(c.threshold >= 0)) throw Usage_error("--threshold must be a non-negative number");
   if(c.quiet && c.verbose) throw Usage_error("--quiet and --verbose contradict each other");

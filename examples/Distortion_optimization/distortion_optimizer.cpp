@@ -190,8 +190,11 @@ auto common_parameters(const Command_line& c, const Weights& weights)
 {
   namespace P = DO::parameters;
   const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
-  const auto schedule = c.schedule == "local" ? DO::Schedule::LOCAL
-                      : c.schedule == "global" ? DO::Schedule::GLOBAL : DO::Schedule::ALTERNATING;
+  // Without --schedule, the library's default (global steps alone where they are Newton's).
+  const std::optional<DO::Schedule> schedule =
+    c.schedule.empty() ? std::nullopt
+    : std::optional<DO::Schedule>(c.schedule == "local" ? DO::Schedule::LOCAL
+                                  : c.schedule == "global" ? DO::Schedule::GLOBAL : DO::Schedule::ALTERNATING);
   const auto weighting = c.cell_weighting == "volume" ? DO::Cell_weighting::VOLUME
                        : c.cell_weighting == "uniform" ? DO::Cell_weighting::UNIFORM : DO::Cell_weighting::AVERAGE_VOLUME;
   const auto order = c.order == "greedy" ? DO::Vertex_order::GREEDY : DO::Vertex_order::SORTED_PER_SWEEP;

@@ -18,6 +18,7 @@
 #include <array>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <random>
 
 using namespace test_meshes;
@@ -346,6 +347,45 @@ TEST(MinimizeDistortion, NewtonAndLaplacianGlobalStepsReachTheSameMinimum)
     }
     EXPECT_NEAR(results[1].final_energy, results[0].final_energy, 1e-6 * results[0].final_energy) << fixed;
   }
+}
+
+// The default schedule: Newton's global steps alone for a measure with a Hessian (the same map as
+// Schedule::GLOBAL), alternating with sweeps otherwise (as Schedule::ALTERNATING); and when a
+// step gains too little to go on (here, less than 99% of the excess), a sweep follows it in the
+// same iteration: the map of a GLOBAL iteration, then of a LOCAL one.
+TEST(MinimizeDistortion, DefaultScheduleIsNewtonStepsAloneWithASweepWhereTheyStall)
+{
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("nefertiti.off"), mesh));
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  DO::initial_parameterization(mesh, uv);
+  const std::vector<Point_2> tutte = targets_of(mesh, uv);
+  const auto run = [&](const auto& measure, std::optional<DO::Schedule> schedule, double threshold, std::size_t iterations) {
+    const DO::Result r = CGAL::minimize_distortion(mesh, uv, measure,
+      DO::parameters::schedule(schedule, DO::parameters::convergence_threshold(threshold)).number_of_iterations(iterations));
+    return std::make_pair(targets_of(mesh, uv), r);
+  };
+  const auto restart = [&] { for(auto v : mesh.vertices()) uv[v] = tutte[v.idx()]; };
+
+  restart();
+  const auto by_default = run(DO::Symmetric_dirichlet(), std::nullopt, 1e-4, 3);
+  restart();
+  EXPECT_EQ(run(DO::Symmetric_dirichlet(), DO::Schedule::GLOBAL, 1e-4, 3).first, by_default.first);
+  restart();
+  EXPECT_NE(run(DO::Symmetric_dirichlet(), DO::Schedule::ALTERNATING, 1e-4, 3).first, by_default.first);
+  restart();
+  const auto conformal = run(DO::Conformal_dilatation(), std::nullopt, 1e-4, 3);
+  restart();
+  EXPECT_EQ(run(DO::Conformal_dilatation(), DO::Schedule::ALTERNATING, 1e-4, 3).first, conformal.first);
+
+  restart();
+  const auto stalled = run(DO::Symmetric_dirichlet(), std::nullopt, 0.99, 1);
+  EXPECT_EQ(stalled.second.iterations, 1u);
+  restart();
+  const auto step = run(DO::Symmetric_dirichlet(), DO::Schedule::GLOBAL, 0.99, 1);
+  EXPECT_LT(stalled.second.final_energy, step.second.final_energy);
+  const auto then_sweep = run(DO::Symmetric_dirichlet(), DO::Schedule::LOCAL, 0.99, 1);
+  EXPECT_EQ(then_sweep.first, stalled.first);
 }
 
 // A helical ramp of 1.2 turns (r in [1, 2], z = 0.3 theta): a disk whose flattening wants an

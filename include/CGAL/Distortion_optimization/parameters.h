@@ -47,8 +47,8 @@ enum class Vertex_order
 enum class Schedule
 {
   LOCAL,       ///< the paper's Algorithms 1-2: one sweep of local vertex moves
-  GLOBAL,      ///< one preconditioned step that moves all free vertices at once
-  ALTERNATING  ///< a local sweep, then a global step (the default: far fewer iterations)
+  GLOBAL,      ///< one preconditioned step that moves all free vertices at once (the default with Newton's steps)
+  ALTERNATING  ///< a local sweep, then a global step (the default with the reweighted Laplacian's steps)
 };
 
 /// \ingroup PkgDistortionOptimizationRef
@@ -114,7 +114,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(local_solver_t, local_solver)
 /// to the one-thread sweep: with `number_of_threads` > 1 the parallel sweeps use the sorted order.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
 
-/// A `Schedule`; default `Schedule::ALTERNATING`.
+/// A `Schedule` (or a `std::optional` of one: empty for the default); default `Schedule::GLOBAL` with projected
+/// Newton steps (a local sweep then follows a step that gains too little), `Schedule::ALTERNATING` otherwise.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(schedule_t, schedule)
 /// `bool`: start from the harmonic map of the fixed vertices when it is valid and better (or from
 /// the best safe point towards it); default `true`, except with `Schedule::LOCAL` (the paper's

@@ -129,6 +129,9 @@ public:
       previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)),
       newton_(newton && measures_internal::Has_hessian<Measure, n>::value && p_.is_sliding.empty()) {}
 
+  // Whether the steps solve Newton's system (else the reweighted Laplacian's).
+  bool is_newton() const { return newton_; }
+
   // The harmonic start (see the file comment), with the cell weights w(c) (for the default
   // weights, the volume-weighted cotangent Laplacian). Skipped where the harmonic map is not
   // defined (Laplacian_system::harmonic_targets). Returns true if the map changed.

@@ -35,7 +35,8 @@ struct Options
   double threshold = 1e-4;
   Local_solver solver = Local_solver::GRADIENT_DESCENT;
   Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
-  Schedule schedule = Schedule::ALTERNATING;
+  // Unset: global steps only where they are Newton's in 2D, else alternating (Steps).
+  std::optional<Schedule> schedule;
   bool harmonic_start = true;   // false by default with Schedule::LOCAL (read_options)
   bool global_injectivity = false;   // guard the boundary of free boundary vertices
   int threads = 1;
@@ -66,7 +67,9 @@ Options read_options(const NamedParameters& np)
   o.threshold = choose_parameter(get_parameter(np, internal_np::convergence_threshold), o.threshold);
   o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
   o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
-  o.schedule = choose_parameter(get_parameter(np, internal_np::schedule), o.schedule);
+  auto schedule = get_parameter(np, internal_np::schedule);
+  if constexpr(!std::is_same<decltype(schedule), CGAL::internal_np::Param_not_found>::value)
+    o.schedule = schedule;   // a Schedule, or a std::optional of one (empty: the default)
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   o.global_injectivity = choose_parameter(get_parameter(np, internal_np::preserve_global_injectivity), o.global_injectivity);
   o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
