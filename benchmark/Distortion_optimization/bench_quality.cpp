@@ -22,7 +22,6 @@
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 
-#include <CGAL/Mesh_3/dihedral_angle_3.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <boost/property_map/function_property_map.hpp>
@@ -50,29 +49,26 @@ struct Row
   std::size_t boundary_slivers = 0;
 };
 
-// The slivers (smallest dihedral angle below 10 degrees) whose vertices are all on the boundary.
-std::size_t boundary_slivers(const Volume& volume, const Targets& positions)
+// The quality of `volume` at `positions` into `row`, with the slivers (smallest dihedral angle
+// below 10 degrees, as mesh_quality() counts them) whose vertices are all on the boundary.
+void score(const Volume& volume, const Targets& positions, Row& row)
 {
-  std::size_t count = 0;
+  row.quality = DO::mesh_quality(volume, boost::const_associative_property_map<Targets>(positions));
+  row.boundary_slivers = 0;
   for(auto c = volume.cells_in_complex_begin(); c != volume.cells_in_complex_end(); ++c) {
     bool on_boundary = true;
-    std::array<Point, 4> p;
+    std::array<DO::internal::Vector<3>, 4> x;
     for(int i = 0; i < 4; ++i) {
       on_boundary = on_boundary && volume.in_dimension(c->vertex(i)) < 3;
-      p[i] = positions.at(c->vertex(i));
+      x[i] = DO::internal::as_vector(positions.at(c->vertex(i)));
     }
     if(!on_boundary) continue;
-    double smallest = 180;
-    for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j) {
-        int k = 0;
-        while(k == i || k == j) ++k;
-        const int l = 6 - i - j - k;
-        smallest = std::min(smallest, std::abs(CGAL::to_double(CGAL::Mesh_3::dihedral_angle(p[i], p[j], p[k], p[l]))));
-      }
-    count += smallest < 10;
+    std::array<double, 6> angles;
+    int count = 0;
+    double ratio = 0;
+    DO::internal::cell_shape(x, angles, count, ratio);
+    row.boundary_slivers += *std::min_element(angles.begin(), angles.begin() + count) < 10;
   }
-  return count;
 }
 
 void print(const Row& row)
@@ -106,8 +102,7 @@ void ours(const Volume& volume, bool sliding, double earlier_seconds, Row& row)
     DO::improve_mesh_quality(volume, Target_map(positions));
   }
   row.seconds.push_back(earlier_seconds + seconds_since(start));
-  row.quality = DO::mesh_quality(volume, Target_map(positions));
-  row.boundary_slivers = boundary_slivers(volume, positions);
+  score(volume, positions, row);
 }
 
 void bench_surface(const std::string& name, const Surface& surface, int repeats)
@@ -125,23 +120,20 @@ void bench_surface(const std::string& name, const Surface& surface, int repeats)
     const double mesh_seconds = seconds_since(start);
     plain.seconds.push_back(0);
     const Targets refined_positions = identity(refined);
-    plain.quality = DO::mesh_quality(refined, boost::const_associative_property_map<Targets>(refined_positions));
-    plain.boundary_slivers = boundary_slivers(refined, refined_positions);
+    score(refined, refined_positions, plain);
 
     start = std::chrono::steady_clock::now();
     const Volume optimized = DO::mesh_interior(surface, DOP::cell_size(h, DOP::odt_iterations(25, DOP::perturb_slivers(true,
                                                                           DOP::exude_slivers(true)))));
     odt.seconds.push_back(seconds_since(start) - mesh_seconds);
     const Targets odt_positions = identity(optimized);
-    odt.quality = DO::mesh_quality(optimized, boost::const_associative_property_map<Targets>(odt_positions));
-    odt.boundary_slivers = boundary_slivers(optimized, odt_positions);
+    score(optimized, odt_positions, odt);
 
     start = std::chrono::steady_clock::now();
     const Volume exuded = DO::mesh_interior(surface, DOP::cell_size(h, DOP::exude_slivers(true)));
     exude.seconds.push_back(seconds_since(start) - mesh_seconds);
     const Targets exuded_positions = identity(exuded);
-    exude.quality = DO::mesh_quality(exuded, boost::const_associative_property_map<Targets>(exuded_positions));
-    exude.boundary_slivers = boundary_slivers(exuded, exuded_positions);
+    score(exuded, exuded_positions, exude);
 
     ours(refined, false, 0, fixed);
     ours(refined, true, 0, sliding);

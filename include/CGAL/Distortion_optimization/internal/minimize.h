@@ -83,7 +83,6 @@ public:
     // in the same iteration (minimize()), so that the run stops only when neither gains.
     schedule_ = options.schedule.value_or(n == 2 && global_step_ && global_step_->is_newton() ? Schedule::GLOBAL
                                                                                              : Schedule::ALTERNATING);
-    sweeps_on_stall_ = !options.schedule && schedule_ == Schedule::GLOBAL;
   }
 
   // After the targets were replaced from outside the steps (untangling restores a better map).
@@ -103,7 +102,7 @@ public:
 
   // Whether a local sweep follows an iteration that gained too little (the default schedule of
   // global steps alone), and that sweep.
-  bool sweeps_on_stall() const { return sweeps_on_stall_; }
+  bool sweeps_on_stall() const { return !options_.schedule && schedule_ == Schedule::GLOBAL; }
   void sweep_after_stall() { sweep(); }
 
 private:
@@ -132,7 +131,6 @@ private:
   Local_step<State> local_step_;
   std::unique_ptr<Global_step<State>> global_step_;
   Schedule schedule_;
-  bool sweeps_on_stall_ = false;
   std::vector<std::vector<std::uint32_t>> sets_;
   Vertex_partition partition_;
 };

@@ -57,6 +57,14 @@ Global_solver global_solver_for(const Options& options)
   return options.global_solver.value_or(n == 2 ? Global_solver::PROJECTED_NEWTON : Global_solver::REWEIGHTED_LAPLACIAN);
 }
 
+// Sets `option` to a named parameter's value if it was given: a T, or a std::optional of one
+// (empty: the default).
+template <class T, class Parameter>
+void assign_if_given(std::optional<T>& option, const Parameter& value)
+{
+  if constexpr(!std::is_same<Parameter, CGAL::internal_np::Param_not_found>::value) option = value;
+}
+
 template <class NamedParameters>
 Options read_options(const NamedParameters& np)
 {
@@ -67,15 +75,11 @@ Options read_options(const NamedParameters& np)
   o.threshold = choose_parameter(get_parameter(np, internal_np::convergence_threshold), o.threshold);
   o.solver = choose_parameter(get_parameter(np, internal_np::local_solver), o.solver);
   o.order = choose_parameter(get_parameter(np, internal_np::vertex_order), o.order);
-  auto schedule = get_parameter(np, internal_np::schedule);
-  if constexpr(!std::is_same<decltype(schedule), CGAL::internal_np::Param_not_found>::value)
-    o.schedule = schedule;   // a Schedule, or a std::optional of one (empty: the default)
+  assign_if_given(o.schedule, get_parameter(np, internal_np::schedule));
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   o.global_injectivity = choose_parameter(get_parameter(np, internal_np::preserve_global_injectivity), o.global_injectivity);
   o.parallel_sweep = choose_parameter(get_parameter(np, internal_np::parallel_sweep), o.parallel_sweep);
-  auto solver = get_parameter(np, internal_np::global_solver);
-  if constexpr(!std::is_same<decltype(solver), CGAL::internal_np::Param_not_found>::value)
-    o.global_solver = solver;   // a Global_solver, or a std::optional of one (empty: the default)
+  assign_if_given(o.global_solver, get_parameter(np, internal_np::global_solver));
   o.harmonic_start = choose_parameter(get_parameter(np, internal_np::use_harmonic_start),
                                       o.schedule != Schedule::LOCAL);
   o.untangle_first = choose_parameter(get_parameter(np, internal_np::untangle_first), o.untangle_first);

@@ -59,6 +59,14 @@ bool is_tangled(const Simplicial_map<n>& map, std::size_t c, const GeomTraits& t
   return is_inverted(map, c, traits) || is_numerically_flat(map, c);
 }
 
+// The number of cells still to untangle (is_tangled), in parallel.
+template <int n, class GeomTraits>
+std::size_t number_of_tangled_cells(const Simplicial_map<n>& map, const GeomTraits& traits, const Workers& workers)
+{
+  return workers.reduce(map.number_of_cells(), std::size_t(0), [&](std::size_t c) { return std::size_t(is_tangled(map, c, traits)); },
+                        [](std::size_t a, std::size_t b) { return a + b; });
+}
+
 // The smallest det J_c of the map, in parallel.
 template <int n>
 double smallest_jacobian_determinant(const Simplicial_map<n>& map, const Workers& workers)
@@ -239,7 +247,7 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
     return workers.reduce(nc, std::size_t(0), [&](std::size_t c) { return std::size_t(is_counted(c)); },
                           [](std::size_t a, std::size_t b) { return a + b; });
   };
-  const auto tangled = [&] { return count([&](std::size_t c) { return is_tangled(problem.map, c, traits); }); };
+  const auto tangled = [&] { return number_of_tangled_cells(problem.map, traits, workers); };
   Untangle_report report;
   report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
@@ -464,8 +472,8 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     } else {
       throw;
     }
-    std::size_t inverted_before = 0;   // of the start map, which the failed attempt restored
-    for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c) inverted_before += is_tangled(problem.map, c, traits);
+    // Of the start map, which the failed attempt restored.
+    const std::size_t inverted_before = number_of_tangled_cells(problem.map, traits, Workers(options.threads));
     const std::vector<Vector<n>> start_targets = problem.map.target;
     problem.map.target = tutte;
     Untangle_report report;
