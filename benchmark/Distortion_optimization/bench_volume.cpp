@@ -7,6 +7,8 @@
 //   - "gyroid cube": the cube of the unit ball's volume, meshed with sliver exudation, onto the
 //     ball, isometric dilatation C, boundary sliding, carrying a gyroid of two periods (as the
 //     example gyroid_texture).
+// Each pipeline optimizes with either global step: the reweighted Laplacian's, and projected
+// Newton's (the default; the measure C has no Hessian: its rows take the Laplacian's too).
 // Stages: mesh (mesh_interior, sequential, timed once per pipeline), start (the ball map), untangle
 // (of the cells the ball map flattens), optimize, carry (the gyroid under the optimized map, its
 // embedding made once beforehand). This machine's speed drifts: each configuration runs `repeats`
@@ -66,20 +68,20 @@ struct Row
 
 void print_header()
 {
-  std::printf("%-12s %7s %7s %7s %7s %6s %9s %9s %6s %9s %9s %8s %9s %8s %9s %9s\n", "pipeline", "threads", "tets",
+  std::printf("%-12s %-9s %7s %7s %7s %7s %6s %9s %9s %6s %9s %9s %8s %9s %8s %9s %9s\n", "pipeline", "step", "threads", "tets",
               "mesh s", "start s", "flat", "untangle", "optimize", "iters", "E start", "E final", "inverted",
               "max|r-1|", "carry s", "gyroid C", "gyroid K");
 }
 
-void print_row(const char* pipeline, int threads, std::size_t tets, double mesh_seconds, const Row& row,
+void print_row(const char* pipeline, const char* step, int threads, std::size_t tets, double mesh_seconds, const Row& row,
                bool has_gyroid)
 {
   if(!row.error.empty()) {
-    std::printf("%-12s %7d %7zu %7.2f %7.3f %6zu failed: %s\n", pipeline, threads, tets, mesh_seconds, median(row.start),
-                row.flat, row.error.c_str());
+    std::printf("%-12s %-9s %7d %7zu %7.2f %7.3f %6zu failed: %s\n", pipeline, step, threads, tets, mesh_seconds,
+                median(row.start), row.flat, row.error.c_str());
     return;
   }
-  std::printf("%-12s %7d %7zu %7.2f %7.3f %6zu %9.3f %9.3f %6zu %9.5g %9.5g %8zu %9.1e", pipeline, threads, tets,
+  std::printf("%-12s %-9s %7d %7zu %7.2f %7.3f %6zu %9.3f %9.3f %6zu %9.5g %9.5g %8zu %9.1e", pipeline, step, threads, tets,
               mesh_seconds, median(row.start), row.flat, median(row.untangle), median(row.optimize), row.r.iterations,
               row.r.initial_energy, row.r.final_energy, row.r.inverted_cells, row.distance);
   if(has_gyroid)
@@ -91,7 +93,7 @@ void print_row(const char* pipeline, int threads, std::size_t tets, double mesh_
 // One run of the pipeline from the mesh on: ball map, untangling and optimization (one call),
 // carrying the embedded gyroid if there is one.
 template <class Measure>
-void run(const Volume& volume, const Measure& measure, int threads, const Surface* gyroid,
+void run(const Volume& volume, const Measure& measure, DO::Global_solver solver, int threads, const Surface* gyroid,
          const DO::Volume_embedding<Volume>* embedding, Row& row)
 {
   auto start = std::chrono::steady_clock::now();
@@ -101,7 +103,7 @@ void run(const Volume& volume, const Measure& measure, int threads, const Surfac
   if(!row.error.empty()) return;
   try {
     row.r = CGAL::minimize_distortion(volume, Target_map(map), measure,
-      DOP::sliding_boundary(DO::Sphere_surface(), DOP::untangle_first(row.flat > 0, DOP::number_of_threads(threads)))
+      DOP::sliding_boundary(DO::Sphere_surface(), DOP::untangle_first(row.flat > 0, DOP::number_of_threads(threads, DOP::global_solver(solver))))
         .number_of_iterations(200));
   } catch(const DO::Invalid_input& e) {
     row.error = e.what();
@@ -158,12 +160,15 @@ int main(int argc, char** argv)
     std::printf("median of %d runs; E: symmetric Dirichlet (surface), isometric dilatation C (gyroid cube), "
                 "volume-weighted means; E start is after untangling; gyroid C, K: area-weighted means\n", repeats);
 
-    Row surface_rows[2], cube_rows[2];
+    const DO::Global_solver solvers[] = {DO::Global_solver::REWEIGHTED_LAPLACIAN, DO::Global_solver::PROJECTED_NEWTON};
+    const char* solver_names[] = {"laplacian", "newton"};
+    Row surface_rows[2][2], cube_rows[2][2];
     for(int repeat = 0; repeat < repeats; ++repeat)
-      for(int t = 0; t < 2; ++t) {
-        run(surface_volume, DO::Symmetric_dirichlet(), thread_counts[t], nullptr, nullptr, surface_rows[t]);
-        run(cube_volume, DO::Isometric_dilatation(), thread_counts[t], &gyroid, &embedding, cube_rows[t]);
-      }
+      for(int s = 0; s < 2; ++s)
+        for(int t = 0; t < 2; ++t) {
+          run(surface_volume, DO::Symmetric_dirichlet(), solvers[s], thread_counts[t], nullptr, nullptr, surface_rows[s][t]);
+          run(cube_volume, DO::Isometric_dilatation(), solvers[s], thread_counts[t], &gyroid, &embedding, cube_rows[s][t]);
+        }
     // The gyroid under the ball map itself (the paper's Fig. 14, left).
     Targets ball;
     DO::star_shaped_to_unit_ball(cube_volume, Target_map(ball), DO::volume_centroid(cube_volume));
@@ -173,19 +178,24 @@ int main(int argc, char** argv)
     const auto start_k = CGAL::compute_distortion(gyroid, carried.points(), DO::Conformal_dilatation());
 
     print_header();
-    for(int t = 0; t < 2; ++t)
-      print_row("surface", thread_counts[t], surface_volume.number_of_cells_in_complex(), surface_mesh_seconds,
-                surface_rows[t], false);
-    for(int t = 0; t < 2; ++t)
-      print_row("gyroid cube", thread_counts[t], cube_volume.number_of_cells_in_complex(), cube_mesh_seconds,
-                cube_rows[t], true);
+    for(int s = 0; s < 2; ++s)
+      for(int t = 0; t < 2; ++t)
+        print_row("surface", solver_names[s], thread_counts[t], surface_volume.number_of_cells_in_complex(),
+                  surface_mesh_seconds, surface_rows[s][t], false);
+    for(int s = 0; s < 2; ++s)
+      for(int t = 0; t < 2; ++t)
+        print_row("gyroid cube", solver_names[s], thread_counts[t], cube_volume.number_of_cells_in_complex(),
+                  cube_mesh_seconds, cube_rows[s][t], true);
     std::printf("gyroid carried under the ball map: C mean %.5g max %.5g, K mean %.5g max %.5g\n", start_c.mean_volume,
                 start_c.max, start_k.mean_volume, start_k.max);
-    for(int t = 0; t < 2; ++t)
-      if(cube_rows[t].error.empty())
-        std::printf("gyroid carried under the optimized map (%d thread%s): C mean %.5g max %.5g, K mean %.5g max %.5g\n",
-                    thread_counts[t], t ? "s" : "", cube_rows[t].gyroid_c.mean_volume, cube_rows[t].gyroid_c.max,
-                    cube_rows[t].gyroid_k.mean_volume, cube_rows[t].gyroid_k.max);
+    for(int s = 0; s < 2; ++s)
+      for(int t = 0; t < 2; ++t) {
+        const Row& row = cube_rows[s][t];
+        if(row.error.empty())
+          std::printf("gyroid carried under the optimized map (%s, %d thread%s): C mean %.5g max %.5g, K mean %.5g max %.5g\n",
+                      solver_names[s], thread_counts[t], t ? "s" : "", row.gyroid_c.mean_volume, row.gyroid_c.max,
+                      row.gyroid_k.mean_volume, row.gyroid_k.max);
+      }
   } catch(const DO::Invalid_input& e) {
     std::fprintf(stderr, "Error: %s\n", e.what());
     return 1;

@@ -110,7 +110,7 @@ flattened (checked with exact predicates); the energy never increases.
     \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
                           step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes, a measure with a `hessian()`, no sliding boundary), with a local sweep added to an iteration whose step gains too little to go on; `ALTERNATING` otherwise}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes, a measure with a `hessian()`), with a local sweep added to an iteration whose step gains too little to go on; `ALTERNATING` otherwise}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}
@@ -164,7 +164,7 @@ flattened (checked with exact predicates); the energy never increases.
                           (`Distortion_optimization::parameters::global_solver()`)}
     \cgalParamType{`Distortion_optimization::Global_solver`: `REWEIGHTED_LAPLACIAN` or `PROJECTED_NEWTON`}
     \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
-    \cgalParamExtra{Newton steps need a measure with a `hessian()` and no sliding boundary; otherwise the step is the Laplacian's.}
+    \cgalParamExtra{Newton steps need a measure with a `hessian()`, otherwise the step is the Laplacian's; sliding vertices take Newton's step restricted to their tangent planes.}
   \cgalParamNEnd
 
   \cgalParamNBegin{sliding_boundary}
@@ -308,7 +308,7 @@ are the points of the triangulation.
     \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
                           step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes, a measure with a `hessian()`, no sliding boundary), with a local sweep added to an iteration whose step gains too little to go on; `ALTERNATING` otherwise}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes, a measure with a `hessian()`), with a local sweep added to an iteration whose step gains too little to go on; `ALTERNATING` otherwise}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}
@@ -361,8 +361,11 @@ are the points of the triangulation.
     \cgalParamDescription{the system that gives the direction of a global step
                           (`Distortion_optimization::parameters::global_solver()`)}
     \cgalParamType{`Distortion_optimization::Global_solver`: `REWEIGHTED_LAPLACIAN` or `PROJECTED_NEWTON`}
-    \cgalParamDefault{`Distortion_optimization::Global_solver::REWEIGHTED_LAPLACIAN`}
-    \cgalParamExtra{`PROJECTED_NEWTON` factors a system of 3 unknowns per free vertex, which fills in heavily for tetrahedral meshes: many times slower than the default beyond a few thousand tetrahedra.}
+    \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
+    \cgalParamExtra{Newton steps need a measure with a `hessian()`, otherwise the step is the Laplacian's. The Newton
+                    system of a complex (3 unknowns per free vertex) fills in too much to factor: it is solved
+                    inexactly, by at most 60 Jacobi-preconditioned conjugate gradient iterations (truncated Newton).
+                    Sliding vertices take the step restricted to their tangent planes.}
   \cgalParamNEnd
 
   \cgalParamNBegin{sliding_boundary}

@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Distortion_optimization/initial_maps.h>
+#include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 #include <CGAL/Distortion_optimization/internal/named_parameters.h>
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
@@ -347,6 +348,41 @@ TEST(MinimizeDistortion, NewtonAndLaplacianGlobalStepsReachTheSameMinimum)
     }
     EXPECT_NEAR(results[1].final_energy, results[0].final_energy, 1e-6 * results[0].final_energy) << fixed;
   }
+}
+
+// A border sliding on a circle (the Tutte start's): Newton's steps restricted to the tangent
+// lines reach the minimum the Laplacian's steps reach, in far fewer iterations, with the border
+// on the circle and no triangle flipped.
+TEST(MinimizeDistortion, NewtonStepsSlideTheBorderOnACircle)
+{
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("nefertiti.off"), mesh));
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  DO::initial_parameterization(mesh, uv);
+  const std::vector<Point_2> tutte = targets_of(mesh, uv);
+  std::vector<Mesh3::Vertex_index> border;
+  for(auto v : mesh.vertices())
+    if(mesh.is_border(v)) border.push_back(v);
+  ASSERT_GE(border.size(), 3u);
+  // The circle through three border vertices far apart: the one the start's border lies on.
+  const Point_2 center = CGAL::circumcenter(uv[border[0]], uv[border[border.size() / 3]], uv[border[2 * border.size() / 3]]);
+  const double radius = std::sqrt(CGAL::squared_distance(center, uv[border[0]]));
+  const DO::Sphere_surface circle({center.x(), center.y(), 0.}, radius);
+  std::array<DO::Result, 2> results;
+  for(int k = 0; k < 2; ++k) {
+    for(auto v : mesh.vertices()) uv[v] = tutte[v.idx()];
+    results[k] = CGAL::minimize_distortion(mesh, uv, DO::Symmetric_dirichlet(),
+      DO::parameters::global_solver(k == 0 ? DO::Global_solver::REWEIGHTED_LAPLACIAN : DO::Global_solver::PROJECTED_NEWTON,
+        DO::parameters::sliding_boundary(circle, DO::parameters::convergence_threshold(1e-9))).number_of_iterations(1000));
+    EXPECT_EQ(count_flipped(mesh, uv), 0u) << k;
+    EXPECT_NEAR(brute_force_energy(mesh, uv, "symmetric_dirichlet"), results[k].final_energy, 1e-9 * results[k].final_energy);
+    double farthest = 0;
+    for(auto v : border) farthest = std::max(farthest, std::abs(std::sqrt(CGAL::squared_distance(center, uv[v])) - radius));
+    EXPECT_LT(farthest, 1e-12 * radius) << k;
+  }
+  EXPECT_LT(results[1].final_energy, results[1].initial_energy);
+  EXPECT_NEAR(results[1].final_energy, results[0].final_energy, 1e-6 * results[0].final_energy);
+  EXPECT_LT(2 * results[1].iterations, results[0].iterations);
 }
 
 // The default schedule: Newton's global steps alone for a measure with a Hessian (the same map as

@@ -573,6 +573,40 @@ TEST(TetrahedralMeshes, BoundarySlidingOnTheUnitSphere)
   }
 }
 
+// Newton's global steps on a complex (the default: truncated conjugate gradients on the projected
+// Hessian) and the reweighted Laplacian's reach the same minimum of symmetric Dirichlet, with the
+// boundary fixed and sliding on the sphere (Newton's step restricted to the tangent planes);
+// Newton's in fewer iterations.
+TEST(TetrahedralMeshes, NewtonAndLaplacianStepsReachTheSameMinimum)
+{
+  const C3t3 c3t3 = mesh_ellipsoid(0.3);
+  Target_storage start;
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), CGAL::ORIGIN);
+  ASSERT_EQ(inverted(c3t3, start), 0u);
+  const auto boundary = boundary_vertices(c3t3);
+  for(const bool slide : {false, true}) {
+    std::array<DO::Result, 2> results;
+    for(int k = 0; k < 2; ++k) {
+      Target_storage map = start;
+      const auto np = DO::parameters::global_solver(k == 0 ? DO::Global_solver::REWEIGHTED_LAPLACIAN : DO::Global_solver::PROJECTED_NEWTON,
+        DO::parameters::convergence_threshold(1e-9)).number_of_iterations(3000);
+      results[k] = slide ? CGAL::minimize_distortion(c3t3, Target_map(map), DO::Symmetric_dirichlet(),
+                                                     DO::parameters::sliding_boundary(DO::Sphere_surface(), np))
+                         : CGAL::minimize_distortion(c3t3, Target_map(map), DO::Symmetric_dirichlet(), np);
+      EXPECT_EQ(inverted(c3t3, map), 0u) << slide << k;
+      double farthest = 0;
+      for(Vertex_handle v : boundary) {
+        const Point_3& p = map.at(v);
+        farthest = std::max(farthest, std::abs(std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z())) - 1));
+      }
+      EXPECT_LT(farthest, 1e-12) << slide << k;
+    }
+    EXPECT_LT(results[1].final_energy, results[1].initial_energy) << slide;
+    EXPECT_NEAR(results[1].final_energy, results[0].final_energy, 1e-6 * results[0].final_energy) << slide;
+    EXPECT_LT(results[1].iterations, results[0].iterations) << slide;
+  }
+}
+
 // A user surface (AABB tree): the boundary slides on the polyhedral boundary of the start map,
 // here the image of a TetGen cube under a shear, so the surface has corners and flat faces.
 // Constrained vertices stay where they were, to the bit.

@@ -341,15 +341,14 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
   \cgalParamNBegin{schedule}
     \cgalParamDescription{what an iteration does (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes, a measure with a `hessian()`, no sliding boundary), with a local sweep added to an iteration whose step gains too little to go on; `ALTERNATING` otherwise}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes, a measure with a `hessian()`), with a local sweep added to an iteration whose step gains too little to go on; `ALTERNATING` otherwise}
   \cgalParamNEnd
 
   \cgalParamNBegin{global_solver}
     \cgalParamDescription{the system that gives the direction of a global step
                           (`Distortion_optimization::parameters::global_solver()`)}
     \cgalParamType{`Distortion_optimization::Global_solver`}
-    \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON` for a triangle mesh,
-                      `Distortion_optimization::Global_solver::REWEIGHTED_LAPLACIAN` for a complex}
+    \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
     \cgalParamExtra{Newton steps apply to measures with a `hessian()` (not to the default `Conformal_dilatation`).}
   \cgalParamNEnd
 

@@ -57,7 +57,7 @@ enum class Schedule
 enum class Global_solver
 {
   REWEIGHTED_LAPLACIAN, ///< the source's Laplacian reweighted per cell, solved by a few conjugate gradient iterations
-  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`, no sliding boundary; the Laplacian otherwise)
+  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`; the Laplacian otherwise); sliding vertices move in their tangent planes
 };
 
 /// \ingroup PkgDistortionOptimizationRef
@@ -128,9 +128,9 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(use_harmonic_start_t, use_harmo
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
 /// A `Parallel_sweep`; default `Parallel_sweep::INDEPENDENT_SETS`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_sweep)
-/// A `Global_solver`; default `Global_solver::PROJECTED_NEWTON` for triangle meshes,
-/// `Global_solver::REWEIGHTED_LAPLACIAN` for tetrahedral meshes (whose Newton systems fill in
-/// too much for a sparse factorization).
+/// A `Global_solver`; default `Global_solver::PROJECTED_NEWTON` (solved by a sparse factorization
+/// for triangle meshes, by truncated conjugate gradients for tetrahedral meshes, whose systems
+/// fill in too much to factor).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(global_solver_t, global_solver)
 
 /// `bool`: keep the map globally injective when boundary vertices are free (paper section 3.2):

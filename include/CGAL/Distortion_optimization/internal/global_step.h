@@ -14,13 +14,15 @@
 //    accepted only if CGAL's exact orientation predicate sees no flipped cell.
 //  - Or, with Global_solver::PROJECTED_NEWTON and a measure that has a Hessian in its singular
 //    values, the Newton direction d = -H^-1 g with H the sum of the cells' Hessians projected to be
-//    positive semi-definite (cell_hessian.h): a few conjugate gradient iterations preconditioned
-//    by the last factorization of H, or a new sparse LDL^T factorization (ordering computed once)
-//    when they do not converge; the step is bounded and searched as the Laplacian's, and gives way
-//    to it when it cannot be taken.
+//    positive semi-definite (cell_hessian.h). On triangle meshes: a few conjugate gradient
+//    iterations preconditioned by the last factorization of H, or a new sparse LDL^T
+//    factorization (ordering computed once) when they do not converge; on tetrahedral meshes,
+//    whose factorizations fill in too much, truncated Newton (Jacobi-preconditioned conjugate
+//    gradients, cut short). The step is bounded and searched as the Laplacian's, and gives way to
+//    it when it cannot be taken.
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
-//  planes and are projected back onto their surface at every trial; the harmonic start keeps
-//  them where they are.
+//  planes (Newton's: the step restricted to them) and are projected back onto their surface at
+//  every trial; the harmonic start keeps them where they are.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
@@ -38,6 +40,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -122,12 +125,12 @@ class Global_step
   using Vec = Vector<n>;
 
 public:
-  // With `newton`, steps take the projected Newton direction where the measure has a Hessian and
-  // no vertex slides (the reweighted Laplacian's otherwise, and where a Newton solve fails).
+  // With `newton`, steps take the projected Newton direction where the measure has a Hessian (the
+  // reweighted Laplacian's otherwise, and where a Newton solve fails).
   Global_step(State& state, bool newton)
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()),
       previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)),
-      newton_(newton && measures_internal::Has_hessian<Measure, n>::value && p_.is_sliding.empty()) {}
+      newton_(newton && measures_internal::Has_hessian<Measure, n>::value) {}
 
   // Whether the steps solve Newton's system (else the reweighted Laplacian's).
   bool is_newton() const { return newton_; }
@@ -238,58 +241,101 @@ private:
       return false;
     } else {
       std::atomic<bool> finite(true);
+      std::vector<Vec> normal(p_.is_sliding.empty() ? 0 : p_.number_of_vertices());
+      state_.workers().for_each(normal.size(), 1024, [&](std::size_t v) {
+        if(p_.slides(v)) p_.slide(state_.targets()[v], normal[v]);
+      });
       system_.refill_hessian([&](const std::uint32_t* cells, std::size_t count, Cell_hessian<n>* H,
                                  std::array<Vec, n + 1>* gradient) {
         for(std::size_t i = 0; i < count; ++i) {
           const std::uint32_t c = cells[i];
-          if(cell_hessian<n>(state_.measure(), p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) continue;
-          // An inverted or flat cell (where a measure that is not normalized is finite): the
-          // kernel's gradient, and the Laplacian's stiffness in each coordinate.
-          double value;
-          cell_distortions<n>(state_.measure(), p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
-          for(const Vec& v : gradient[i]) finite = finite && v.allFinite();
-          const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
-          const Matrix<n + 1> stiffness = G.transpose() * G;
-          H[i].setZero();
-          for(int a = 0; a <= n; ++a)
-            for(int b = 0; b <= n; ++b) H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
+          if(!cell_hessian<n>(state_.measure(), p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
+            // An inverted or flat cell (where a measure that is not normalized is finite): the
+            // kernel's gradient, and the Laplacian's stiffness in each coordinate.
+            double value;
+            cell_distortions<n>(state_.measure(), p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
+            for(const Vec& v : gradient[i]) finite = finite && v.allFinite();
+            const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
+            const Matrix<n + 1> stiffness = G.transpose() * G;
+            H[i].setZero();
+            for(int a = 0; a <= n; ++a)
+              for(int b = 0; b <= n; ++b) H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
+          }
+          if(!normal.empty()) restrict_to_tangent_planes(p_.map.cells[c], normal, H[i], gradient[i]);
         }
       }, &g);
       if(!finite) return false;
       const Eigen::SparseMatrix<double>& H = system_.hessian();
       Eigen::MatrixXd b(H.rows(), 1), solution = Eigen::MatrixXd::Zero(H.rows(), 1);
       for(int j = 0; j < g.rows(); ++j) b.col(0).template segment<n>(n * j) = -g.row(j).transpose();
-      // An inexact Newton step: conjugate gradients on H preconditioned by the factorization of an
-      // earlier H, to a loose residual; H is factored again when they need many iterations. Far
-      // from the minimum H changes much from step to step: after a failed attempt, the next
-      // 1, 2, 4, ... steps factor at once.
-      bool solved = false;
-      if(factorization_ && skip_lagged_ == 0) {
-        solved = system_.solve(H, *factorization_, b, solution, 6, 1e-3) && solution.allFinite();
-        lagged_failures_ = solved ? 0 : lagged_failures_ + 1;
-        if(!solved) skip_lagged_ = std::size_t(1) << std::min<std::size_t>(lagged_failures_ - 1, 16);
-      } else if(skip_lagged_ > 0) {
-        --skip_lagged_;
+      if constexpr(n == 3) {
+        // A tetrahedral mesh's Newton system fills in far too much for a factorization (about 16 s
+        // per step at 5.10^4 tetrahedra): truncated Newton (Nash, "Newton-type minimization via
+        // the Lanczos method", 1984), Jacobi-preconditioned conjugate gradients from 0, cut at 60
+        // iterations or a residual of 1e-2; every iterate from 0 descends.
+        Eigen::DiagonalPreconditioner<double> jacobi;
+        jacobi.compute(H);
+        system_.solve(H, jacobi, b, solution, 60, 1e-2);
+      } else {
+        solve_by_factorization(H, b, solution);
       }
-      if(!solved) {
-        if(!factorization_) {
-          factorization_ = std::make_unique<Factorization>();
-          factorization_->analyzePattern(H);
-        }
-        // A shift of 1e-10 of the mean diagonal keeps H definite where whole modes were dropped or
-        // nothing is fixed (translations).
-        factorization_->setShift(1e-10 * H.diagonal().mean());
-        factorization_->factorize(H);
-        if(factorization_->info() != Eigen::Success) {
-          factorization_.reset();
-          return false;
-        }
-        solution = factorization_->solve(b);
-        if(!solution.allFinite()) return false;
-      }
+      if(!solution.allFinite()) return false;
       x.resize(g.rows(), n);
       for(int j = 0; j < g.rows(); ++j) x.row(j) = solution.col(0).template segment<n>(n * j).transpose();
       return true;
+    }
+  }
+
+  // The direction of a Newton step on a triangle mesh, x = H^-1 b (NaN where the factorization
+  // fails). Inexact: conjugate gradients on H preconditioned by the factorization of an earlier H,
+  // to a loose residual; H is factored again when they need many iterations. Far from the minimum
+  // H changes much from step to step: after a failed attempt, the next 1, 2, 4, ... steps factor
+  // at once.
+  void solve_by_factorization(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& b, Eigen::MatrixXd& solution)
+  {
+    bool solved = false;
+    if(factorization_ && skip_lagged_ == 0) {
+      solved = system_.solve(H, *factorization_, b, solution, 6, 1e-3) && solution.allFinite();
+      lagged_failures_ = solved ? 0 : lagged_failures_ + 1;
+      if(!solved) skip_lagged_ = std::size_t(1) << std::min<std::size_t>(lagged_failures_ - 1, 16);
+    } else if(skip_lagged_ > 0) {
+      --skip_lagged_;
+    }
+    if(!solved) {
+      if(!factorization_) {
+        factorization_ = std::make_unique<Factorization>();
+        factorization_->analyzePattern(H);
+      }
+      // A shift of 1e-10 of the mean diagonal keeps H definite where whole modes were dropped or
+      // nothing is fixed (translations).
+      factorization_->setShift(1e-10 * H.diagonal().mean());
+      factorization_->factorize(H);
+      if(factorization_->info() != Eigen::Success) {
+        factorization_.reset();
+        solution.setConstant(std::numeric_limits<double>::quiet_NaN());
+        return;
+      }
+      solution = factorization_->solve(b);
+    }
+  }
+
+  // A cell's Hessian and gradient for Newton's step with its sliding vertices in their tangent
+  // planes: with P_v = I - n_v n_v^T (P_v = I for the others), P H P and P g, plus a stiffness
+  // along each sliding vertex's normal (the mean of its diagonal block's, for the scale). The
+  // normal components then decouple from the rest, with a zero right-hand side, so the direction
+  // is exactly Newton's restricted to the tangent planes, on the same sparsity pattern.
+  void restrict_to_tangent_planes(const typename Simplicial_map<n>::Cell& cell, const std::vector<Vec>& normal,
+                                  Cell_hessian<n>& H, std::array<Vec, n + 1>& gradient) const
+  {
+    for(int a = 0; a <= n; ++a) {
+      if(!p_.slides(cell[a])) continue;
+      const Vec& u = normal[cell[a]];
+      const Matrix<n> P = Matrix<n>::Identity() - u * u.transpose();
+      const double stiffness = H.template block<n, n>(n * a, n * a).trace() / n;
+      H.template middleRows<n>(n * a) = P * H.template middleRows<n>(n * a);
+      H.template middleCols<n>(n * a) = H.template middleCols<n>(n * a) * P;
+      H.template block<n, n>(n * a, n * a) += stiffness * u * u.transpose();
+      gradient[a] = P * gradient[a];
     }
   }
 

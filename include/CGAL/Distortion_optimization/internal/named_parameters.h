@@ -41,7 +41,7 @@ struct Options
   bool global_injectivity = false;   // guard the boundary of free boundary vertices
   int threads = 1;
   Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
-  // Unset: Newton for triangle meshes, the Laplacian for tetrahedral ones (global_solver_for).
+  // Unset: Newton's (global_solver_for).
   std::optional<Global_solver> global_solver;
   // (iteration, energy, inverted cells) -> continue? While untangling, the energy is the barrier's.
   std::function<bool(std::size_t, double, std::size_t)> visitor;
@@ -54,7 +54,7 @@ struct Options
 template <int n>
 Global_solver global_solver_for(const Options& options)
 {
-  return options.global_solver.value_or(n == 2 ? Global_solver::PROJECTED_NEWTON : Global_solver::REWEIGHTED_LAPLACIAN);
+  return options.global_solver.value_or(Global_solver::PROJECTED_NEWTON);
 }
 
 // Sets `option` to a named parameter's value if it was given: a T, or a std::optional of one
