@@ -350,6 +350,14 @@ TEST(MinimizeDistortion, NewtonAndLaplacianGlobalStepsReachTheSameMinimum)
   }
 }
 
+// Writes the Tutte map of the disk `mesh` (circle border) into `uv` and returns it.
+template <class UV>
+std::vector<Point_2> tutte_start(const Mesh3& mesh, UV uv)
+{
+  DO::initial_parameterization(mesh, uv);
+  return targets_of(mesh, uv);
+}
+
 // A border sliding on a circle (the Tutte start's): Newton's steps restricted to the tangent
 // lines reach the minimum the Laplacian's steps reach, in far fewer iterations, with the border
 // on the circle and no triangle flipped.
@@ -358,8 +366,7 @@ TEST(MinimizeDistortion, NewtonStepsSlideTheBorderOnACircle)
   Mesh3 mesh;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("nefertiti.off"), mesh));
   auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
-  DO::initial_parameterization(mesh, uv);
-  const std::vector<Point_2> tutte = targets_of(mesh, uv);
+  const std::vector<Point_2> tutte = tutte_start(mesh, uv);
   std::vector<Mesh3::Vertex_index> border;
   for(auto v : mesh.vertices())
     if(mesh.is_border(v)) border.push_back(v);
@@ -394,8 +401,7 @@ TEST(MinimizeDistortion, DefaultScheduleIsNewtonStepsAloneWithASweepWhereTheySta
   Mesh3 mesh;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("nefertiti.off"), mesh));
   auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
-  DO::initial_parameterization(mesh, uv);
-  const std::vector<Point_2> tutte = targets_of(mesh, uv);
+  const std::vector<Point_2> tutte = tutte_start(mesh, uv);
   const auto run = [&](const auto& measure, std::optional<DO::Schedule> schedule, double threshold, std::size_t iterations) {
     const DO::Result r = CGAL::minimize_distortion(mesh, uv, measure,
       DO::parameters::schedule(schedule, DO::parameters::convergence_threshold(threshold)).number_of_iterations(iterations));

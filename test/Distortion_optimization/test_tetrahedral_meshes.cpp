@@ -542,15 +542,22 @@ TEST(TetrahedralMeshes, BadInput)
   EXPECT_EQ(storage, before);
 }
 
+// The star-shaped map of `c3t3` onto the unit ball about the origin, which must not invert a cell.
+static Target_storage onto_unit_ball(const C3t3& c3t3)
+{
+  Target_storage start;
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), CGAL::ORIGIN);
+  EXPECT_EQ(inverted(c3t3, start), 0u);
+  return start;
+}
+
 // Paper Fig. 13's setting: a volume onto the ball with its boundary sliding on the sphere. Sliding
 // must reach a lower energy than the fixed boundary of the same start, keep every boundary vertex
 // on the sphere (to rounding) and never invert a cell, on one thread and two.
 TEST(TetrahedralMeshes, BoundarySlidingOnTheUnitSphere)
 {
   const C3t3 c3t3 = mesh_ellipsoid(0.3);
-  Target_storage start;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), CGAL::ORIGIN);
-  ASSERT_EQ(inverted(c3t3, start), 0u);
+  const Target_storage start = onto_unit_ball(c3t3);
   const auto boundary = boundary_vertices(c3t3);
 
   Target_storage fixed = start;
@@ -580,9 +587,7 @@ TEST(TetrahedralMeshes, BoundarySlidingOnTheUnitSphere)
 TEST(TetrahedralMeshes, NewtonAndLaplacianStepsReachTheSameMinimum)
 {
   const C3t3 c3t3 = mesh_ellipsoid(0.3);
-  Target_storage start;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), CGAL::ORIGIN);
-  ASSERT_EQ(inverted(c3t3, start), 0u);
+  const Target_storage start = onto_unit_ball(c3t3);
   const auto boundary = boundary_vertices(c3t3);
   for(const bool slide : {false, true}) {
     std::array<DO::Result, 2> results;
