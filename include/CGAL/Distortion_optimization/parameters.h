@@ -115,7 +115,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(local_solver_t, local_solver)
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
 
 /// A `Schedule` (or a `std::optional` of one: empty for the default); default `Schedule::GLOBAL` with projected
-/// Newton steps (a local sweep then follows a step that gains too little), `Schedule::ALTERNATING` otherwise.
+/// Newton steps (a local sweep then follows a step that gains too little or is cut short), `Schedule::ALTERNATING`
+/// otherwise.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(schedule_t, schedule)
 /// `bool`: start from the harmonic map of the fixed vertices when it is valid and better (or from
 /// the best safe point towards it); default `true`, except with `Schedule::LOCAL` (the paper's

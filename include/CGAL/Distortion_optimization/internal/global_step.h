@@ -163,8 +163,13 @@ public:
   bool step()
   {
     if(system_.size() == 0) return false;
+    blocked_ = newton_;
     return (newton_ && step_along(true)) || step_along(false);
   }
+
+  // Whether the last step was to be Newton's and did not take its full length: a cell about to
+  // flatten, the boundary guard or the line search cut it short (or it gave way to the Laplacian's).
+  bool was_blocked() const { return blocked_; }
 
 private:
   using Measure = std::decay_t<decltype(std::declval<const State&>().measure())>;
@@ -230,6 +235,7 @@ private:
     double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
     const bool moved = line_search(direction, t, slope, newton ? 1. : 0.);
     if(moved) last = t;
+    if(newton) blocked_ = !(moved && t >= 1);
     return moved;
   }
 
@@ -408,7 +414,7 @@ private:
   Laplacian_system<n> system_;
   Eigen::MatrixXd previous_solution_;
   double last_t_ = 0, last_newton_t_ = 0;   // the last accepted step of each direction
-  bool newton_;
+  bool newton_, blocked_ = false;
   std::unique_ptr<Factorization> factorization_;
   std::size_t lagged_failures_ = 0, skip_lagged_ = 0;   // of the lagged factorization, in a row
 };
