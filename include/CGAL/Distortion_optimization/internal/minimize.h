@@ -26,7 +26,6 @@
 #include <CGAL/Distortion_optimization/internal/partitioned_sweep.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <memory>
