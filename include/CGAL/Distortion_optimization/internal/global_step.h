@@ -179,8 +179,13 @@ private:
   {
     const int size = system_.size();
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(size, n), x;
+    // The unit normals of the sliding vertices' surfaces where they are (empty without sliding).
+    std::vector<Vec> normal(p_.is_sliding.empty() ? 0 : p_.number_of_vertices());
+    state_.workers().for_each(normal.size(), 1024, [&](std::size_t v) {
+      if(p_.slides(v)) p_.slide(state_.targets()[v], normal[v]);
+    });
     if(newton) {
-      if(!newton_direction(g, x)) return false;
+      if(!newton_direction(normal, g, x)) return false;
     } else {
       system_.refill([&](const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) {
         cell_terms(cells, count, factor, gradient);
@@ -212,10 +217,7 @@ private:
     if(!p_.is_sliding.empty()) {
       // In the tangent planes the step may no longer descend: then the sliding vertices stay.
       state_.workers().for_each(direction.size(), 1024, [&](std::size_t v) {
-        if(!p_.slides(v)) return;
-        Vec normal;
-        p_.slide(state_.targets()[v], normal);
-        direction[v] -= direction[v].dot(normal) * normal;
+        if(p_.slides(v)) direction[v] -= direction[v].dot(normal[v]) * normal[v];
       });
       slope = slope_of();
       if(!(slope < 0)) {
@@ -239,18 +241,15 @@ private:
     return moved;
   }
 
-  // The projected Newton direction x = -H^-1 g (rows: free vertices) and the gradient g; false
-  // where some moving cell has no finite gradient or the factorization fails.
-  bool newton_direction(Eigen::MatrixXd& g, Eigen::MatrixXd& x)
+  // The projected Newton direction x = -H^-1 g (rows: free vertices) and the gradient g, in the
+  // tangent planes of the sliding vertices (`normal`); false where some moving cell has no finite
+  // gradient or the factorization fails.
+  bool newton_direction(const std::vector<Vec>& normal, Eigen::MatrixXd& g, Eigen::MatrixXd& x)
   {
     if constexpr(!measures_internal::Has_hessian<Measure, n>::value) {
       return false;
     } else {
       std::atomic<bool> finite(true);
-      std::vector<Vec> normal(p_.is_sliding.empty() ? 0 : p_.number_of_vertices());
-      state_.workers().for_each(normal.size(), 1024, [&](std::size_t v) {
-        if(p_.slides(v)) p_.slide(state_.targets()[v], normal[v]);
-      });
       system_.refill_hessian([&](const std::uint32_t* cells, std::size_t count, Cell_hessian<n>* H,
                                  std::array<Vec, n + 1>* gradient) {
         for(std::size_t i = 0; i < count; ++i) {

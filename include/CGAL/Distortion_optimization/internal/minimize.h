@@ -74,7 +74,7 @@ public:
       (guard_ && guard_->is_on_boundary(v) ? guarded_vertices_ : parallel_vertices_).push_back(v);
     if(guard_) state.set_boundary_guard(guard_.get());
     if(options.schedule != Schedule::LOCAL || options.harmonic_start)
-      global_step_ = std::make_unique<Global_step<State>>(state, global_solver_for<n>(options) == Global_solver::PROJECTED_NEWTON);
+      global_step_ = std::make_unique<Global_step<State>>(state, options.global_solver == Global_solver::PROJECTED_NEWTON);
     // The default schedule: Newton's steps alone on triangle meshes, where a local sweep between
     // them costs more than it gains (time to SLIM's energy, bench_parameterization: lion-head
     // 0.29 s against 0.35 s, mannequin-devil 1.03 s against 1.50 s); otherwise alternating, as the

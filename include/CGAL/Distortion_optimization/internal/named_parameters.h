@@ -41,28 +41,27 @@ struct Options
   bool global_injectivity = false;   // guard the boundary of free boundary vertices
   int threads = 1;
   Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
-  // Unset: Newton's (global_solver_for).
-  std::optional<Global_solver> global_solver;
+  Global_solver global_solver = Global_solver::PROJECTED_NEWTON;
   // (iteration, energy, inverted cells) -> continue? While untangling, the energy is the barrier's.
   std::function<bool(std::size_t, double, std::size_t)> visitor;
   bool untangle_first = false;
 };
 
-// The global step's solver of a run in dimension n: a sparse factorization of the Newton system
-// fills in little for triangle meshes, and far too much for tetrahedral ones (27 s against 0.25 s
-// for the Laplacian's step on bench_table1's 48K-tet stretch, symmetric Dirichlet).
-template <int n>
-Global_solver global_solver_for(const Options& options)
-{
-  return options.global_solver.value_or(Global_solver::PROJECTED_NEWTON);
-}
+template <class T> struct Is_optional : std::false_type {};
+template <class T> struct Is_optional<std::optional<T>> : std::true_type {};
 
-// Sets `option` to a named parameter's value if it was given: a T, or a std::optional of one
-// (empty: the default).
-template <class T, class Parameter>
-void assign_if_given(std::optional<T>& option, const Parameter& value)
+// Sets `option` to a named parameter's value if it was given: a value, or a std::optional of one
+// (empty: the default, which an optional `option` keeps empty).
+template <class Option, class Parameter>
+void assign_if_given(Option& option, const Parameter& value)
 {
-  if constexpr(!std::is_same<Parameter, CGAL::internal_np::Param_not_found>::value) option = value;
+  if constexpr(std::is_same<Parameter, CGAL::internal_np::Param_not_found>::value) {
+    return;
+  } else if constexpr(Is_optional<Parameter>::value && !Is_optional<Option>::value) {
+    if(value) option = *value;
+  } else {
+    option = value;
+  }
 }
 
 template <class NamedParameters>
