@@ -522,6 +522,15 @@ TEST(TetrahedralMeshes, BadInput)
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   }
+  // Three tetrahedra on one facet (a point above the facet (0, 1, 2) besides vertex 3).
+  std::vector<std::array<double, 3>> fan = star;
+  fan.push_back({0.2, 0.2, 1});
+  try {
+    DO::c3t3_from_tetrahedra(fan, {{0, 1, 2, 3}, {0, 2, 1, 6}, {2, 1, 0, 7}}, c3t3);
+    ADD_FAILURE() << "three tetrahedra on one facet were accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("tetrahedra 0, 1 and 2 share the facet (0, 1, 2)"), std::string::npos) << e.what();
+  }
   // Two tetrahedra sharing a facet are a manifold complex.
   EXPECT_EQ(DO::c3t3_from_tetrahedra(star, {{0, 1, 2, 3}, {0, 2, 1, 6}}, c3t3).size(), star.size());
 

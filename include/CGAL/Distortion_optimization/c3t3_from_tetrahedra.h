@@ -13,8 +13,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <numeric>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -26,57 +30,118 @@ namespace internal {
 // shared by three of them: a tetrahedron listed twice, or two that meet only at an edge or a
 // vertex, would make a complex whose boundary is not a surface. Around each edge and each vertex,
 // the tetrahedra must be connected through facets containing it; the message names the cells.
+//
+// Everything is found vertex by vertex in the vertices' stars (flat arrays, no tree of keys: at 1M
+// tetrahedra a map-based check took seconds): a facet or a tetrahedron is met at its smallest
+// vertex, where the tetrahedra sharing it are paired; each pairing joins, in a union-find over the
+// (tetrahedron, vertex) and (tetrahedron, edge) incidences, the incidences of the facet's three
+// vertices and three edges. The cells around a vertex or an edge are then connected iff its
+// incidences have one root.
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra)
 {
-  using Key = std::array<std::size_t, 4>;
-  std::map<Key, std::size_t> seen;
-  std::map<std::array<std::size_t, 2>, std::vector<std::size_t>> edges;
-  std::map<std::size_t, std::vector<std::size_t>> stars;
-  for(std::size_t t = 0; t < tetrahedra.size(); ++t) {
-    Key k = tetrahedra[t];
+  using Index = std::uint32_t;
+  const std::size_t count = tetrahedra.size();
+  if(count >= std::numeric_limits<Index>::max() / 6) throw Invalid_input("too many tetrahedra");
+  std::vector<std::array<std::size_t, 4>> sorted(tetrahedra);
+  std::size_t vertices = 0;
+  for(auto& k : sorted) {
     std::sort(k.begin(), k.end());
-    const auto [it, fresh] = seen.emplace(k, t);
-    if(!fresh)
-      throw Invalid_input("tetrahedra " + std::to_string(it->second) + " and " + std::to_string(t) + " have the same vertices");
-    for(int i = 0; i < 4; ++i) {
-      stars[k[i]].push_back(t);
-      for(int j = i + 1; j < 4; ++j) edges[{k[i], k[j]}].push_back(t);
-    }
+    vertices = std::max(vertices, k[3] + 1);
   }
-  // Tetrahedra a and b share a facet iff they share three vertices.
-  const auto share_facet = [&](std::size_t a, std::size_t b) {
-    int common = 0;
-    for(std::size_t u : tetrahedra[a])
-      for(std::size_t w : tetrahedra[b]) common += u == w;
-    return common == 3;
+  // The star of each vertex: the tetrahedra containing it, in increasing order.
+  std::vector<Index> first(vertices + 1, 0), star(4 * count);
+  for(const auto& k : sorted)
+    for(std::size_t v : k) ++first[v + 1];
+  for(std::size_t v = 0; v < vertices; ++v) first[v + 1] += first[v];
+  {
+    std::vector<Index> next(first.begin(), first.end() - 1);
+    for(std::size_t t = 0; t < count; ++t)
+      for(std::size_t v : sorted[t]) star[next[v]++] = static_cast<Index>(t);
+  }
+  // Union-find over the incidences 4t + i (vertex sorted[t][i]) and 4 count + 6t + e (edge e).
+  std::vector<Index> parent(10 * count);
+  std::iota(parent.begin(), parent.end(), Index(0));
+  const auto root = [&](Index i) {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
   };
-  // Whether the cells (around one edge or vertex) are connected through shared facets.
-  const auto connected = [&](const std::vector<std::size_t>& cells, std::size_t& apart) {
-    std::vector<char> reached(cells.size(), 0);
-    std::vector<std::size_t> stack = {0};
-    reached[0] = 1;
-    while(!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      for(std::size_t j = 0; j < cells.size(); ++j)
-        if(!reached[j] && share_facet(cells[i], cells[j])) {
-          reached[j] = 1;
-          stack.push_back(j);
+  const auto position = [&](std::size_t t, std::size_t v) { return static_cast<int>(std::find(sorted[t].begin(), sorted[t].end(), v) - sorted[t].begin()); };
+  // The incidence of the edge (u, w) of t: 0..5 for the positions (0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3).
+  const auto edge_incidence = [&](std::size_t t, std::size_t u, std::size_t w) {
+    const int i = position(t, std::min(u, w)), j = position(t, std::max(u, w));
+    return static_cast<Index>(4 * count + 6 * t + (i == 0 ? j - 1 : i + j));
+  };
+  const auto name = [](std::size_t i) { return std::to_string(i); };
+
+  // Tetrahedra listed twice, facets shared by three or more, and the pairings across facets.
+  struct Facet { std::size_t v, w; Index t; };
+  std::vector<Facet> facets;
+  std::vector<Index> own;   // the star's tetrahedra whose smallest vertex is u
+  for(std::size_t u = 0; u < vertices; ++u) {
+    facets.clear();
+    own.clear();
+    for(Index k = first[u]; k < first[u + 1]; ++k) {
+      const auto& s = sorted[star[k]];
+      if(s[0] == u) own.push_back(star[k]);
+      for(int i = 0; i < 4; ++i)   // the facets opposite s[i] whose smallest vertex is u
+        if(s[i] != u && (s[0] == u || (i == 0 && s[1] == u))) {
+          std::array<std::size_t, 2> vw;
+          for(int j = 0, m = 0; j < 4; ++j)
+            if(j != i && s[j] != u) vw[m++] = s[j];
+          facets.push_back({vw[0], vw[1], star[k]});
         }
     }
-    for(std::size_t j = 0; j < cells.size(); ++j)
-      if(!reached[j]) { apart = cells[j]; return false; }
-    return true;
-  };
-  std::size_t apart = 0;
-  for(const auto& [edge, cells] : edges)
-    if(!connected(cells, apart))
-      throw Invalid_input("tetrahedra " + std::to_string(cells[0]) + " and " + std::to_string(apart) + " meet only at the edge (" +
-                          std::to_string(edge[0]) + ", " + std::to_string(edge[1]) + "): the complex is not manifold there");
-  for(const auto& [vertex, cells] : stars)
-    if(!connected(cells, apart))
-      throw Invalid_input("tetrahedra " + std::to_string(cells[0]) + " and " + std::to_string(apart) + " meet only at vertex " +
-                          std::to_string(vertex) + ": the complex is not manifold there");
+    std::stable_sort(own.begin(), own.end(), [&](Index a, Index b) { return sorted[a] < sorted[b]; });
+    for(std::size_t i = 1; i < own.size(); ++i)
+      if(sorted[own[i - 1]] == sorted[own[i]])
+        throw Invalid_input("tetrahedra " + name(own[i - 1]) + " and " + name(own[i]) + " have the same vertices");
+    std::stable_sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) { return std::tie(a.v, a.w) < std::tie(b.v, b.w); });
+    for(std::size_t i = 0; i < facets.size(); ++i) {
+      const Facet& f = facets[i];
+      std::size_t j = i + 1;
+      while(j < facets.size() && facets[j].v == f.v && facets[j].w == f.w) ++j;
+      if(j - i > 2)
+        throw Invalid_input("tetrahedra " + name(f.t) + ", " + name(facets[i + 1].t) + " and " + name(facets[i + 2].t) + " share the facet (" +
+                            name(u) + ", " + name(f.v) + ", " + name(f.w) + "): the complex is not manifold there");
+      if(j - i == 2) {
+        const Index a = f.t, b = facets[i + 1].t;
+        const std::array<std::size_t, 3> triangle = {u, f.v, f.w};
+        for(int m = 0; m < 3; ++m) {
+          const std::size_t x = triangle[m], y = triangle[(m + 1) % 3];
+          parent[root(static_cast<Index>(4 * a + position(a, x)))] = root(static_cast<Index>(4 * b + position(b, x)));
+          parent[root(edge_incidence(a, x, y))] = root(edge_incidence(b, x, y));
+        }
+      }
+      i = j - 1;
+    }
+  }
+  // Around each edge (u, w), u < w, and each vertex: one root, else the lowest cell and the first
+  // one it does not reach.
+  struct Around { std::size_t w; Index t; };
+  std::vector<Around> around;
+  for(std::size_t u = 0; u < vertices; ++u) {
+    around.clear();
+    for(Index k = first[u]; k < first[u + 1]; ++k)
+      for(std::size_t w : sorted[star[k]])
+        if(w > u) around.push_back({w, star[k]});
+    std::stable_sort(around.begin(), around.end(), [](const Around& a, const Around& b) { return a.w < b.w; });
+    for(std::size_t i = 0; i < around.size();) {
+      const std::size_t w = around[i].w, lowest = around[i].t;
+      const Index r = root(edge_incidence(lowest, u, w));
+      for(; i < around.size() && around[i].w == w; ++i)
+        if(root(edge_incidence(around[i].t, u, w)) != r)
+          throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(around[i].t) + " meet only at the edge (" + name(u) + ", " +
+                              name(w) + "): the complex is not manifold there");
+    }
+  }
+  for(std::size_t u = 0; u < vertices; ++u) {
+    if(first[u] == first[u + 1]) continue;
+    const Index lowest = star[first[u]], r = root(static_cast<Index>(4 * lowest + position(lowest, u)));
+    for(Index k = first[u]; k < first[u + 1]; ++k)
+      if(root(static_cast<Index>(4 * star[k] + position(star[k], u))) != r)
+        throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(star[k]) + " meet only at vertex " + name(u) +
+                            ": the complex is not manifold there");
+  }
 }
 
 } // namespace internal

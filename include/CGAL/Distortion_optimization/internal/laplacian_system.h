@@ -304,15 +304,22 @@ private:
     // Column by column from the rings, straight into compressed storage (no triplet list: it
     // would be the peak of the whole run): the columns' sizes in parallel, their offsets, then
     // their rows in parallel, each column into its own segment.
+    // A ring lists each neighbour several times: marks (all clear between calls) keep one of each
+    // for the sort.
     const auto free_neighbours = [&](std::size_t column) -> const std::vector<int>& {
       static thread_local std::vector<int> neighbours;
+      static thread_local std::vector<char> marked;
+      if(marked.size() < static_cast<std::size_t>(size_)) marked.resize(size_, 0);
       neighbours.clear();
       const std::uint32_t a = column_vertex_[column];
       for(std::uint32_t k = p_.ring_begin[a]; k < p_.ring_begin[a + 1]; ++k)
         for(auto b : p_.map.cells[p_.ring[k].cell])
-          if(column_[b] >= 0) neighbours.push_back(column_[b]);
+          if(column_[b] >= 0 && !marked[column_[b]]) {
+            marked[column_[b]] = 1;
+            neighbours.push_back(column_[b]);
+          }
+      for(int c : neighbours) marked[c] = 0;
       std::sort(neighbours.begin(), neighbours.end());
-      neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
       return neighbours;
     };
     std::vector<int> offset(size_ + 1, 0);
