@@ -252,7 +252,7 @@ void distortions_from_singular_values(const Measure& measure, const Simplicial_m
       bool done = false;   // by the batched eigenvalues; otherwise cell by cell
       if constexpr(batched) {
         const Vector<3> li(l[0][i], l[1][i], l[2][i]);
-        if((done = are_separated(A[i].trace(), li)))
+        if((done = are_separated(A[i].trace(), li, !vertex_gradients)))
           values[k] = distortion_from_gram(measure, J[i], A[i], li, vertex_gradients ? &dJ : nullptr, s);
       }
       if(!done) values[k] = vertex_gradients || s ? jacobian_distortion<n>(measure, J[i], dJ, s) : jacobian_distortion<n>(measure, J[i]);

@@ -198,18 +198,24 @@ std::array<T, 3> symmetric_eigenvalues(const T& a00, const T& a11, const T& a22,
 }
 
 // Whether the eigenvalues l of a Gram matrix of the given trace are apart enough for the fast
-// paths below (relative gaps above 1e-2, l_3 > 1e-4 l_1) and the trace is far from overflow.
-inline bool are_separated(double trace, const Vector<3>& l)
+// paths below, and the trace is far from overflow. The values alone (`for_values`) need gaps above
+// 1e-2 of the spread l_1 - l_3: the roots of the normalized cubic are then simple, and each l_i is
+// within a few ulps of l_1 even where all three cluster (a near-conformal cell; measured: below
+// 3e-14 relative to sigma_1 over random Jacobians, 5e-15 near conformal). The singular vectors'
+// products (gram_spectral_product) divide by the gaps: they need gaps above 1e-2 of l_1. Both
+// need l_3 > 1e-4 l_1 (sigma_2 from sqrt(l_2)).
+inline bool are_separated(double trace, const Vector<3>& l, bool for_values = false)
 {
-  return trace > 1e-100 && trace < 1e100 && l[0] - l[1] > 1e-2 * l[0] && l[1] - l[2] > 1e-2 * l[0] && l[2] > 1e-4 * l[0];
+  const double scale = for_values ? l[0] - l[2] : l[0];
+  return trace > 1e-100 && trace < 1e100 && l[0] - l[1] > 1e-2 * scale && l[1] - l[2] > 1e-2 * scale && l[2] > 1e-4 * l[0];
 }
 
-inline bool separated_gram_eigenvalues(const Matrix<3>& J, Matrix<3>& A, Vector<3>& l)
+inline bool separated_gram_eigenvalues(const Matrix<3>& J, Matrix<3>& A, Vector<3>& l, bool for_values = false)
 {
   A.noalias() = J.transpose() * J;
   const std::array<double, 3> roots = symmetric_eigenvalues(A(0, 0), A(1, 1), A(2, 2), A(0, 1), A(0, 2), A(1, 2));
   l = Vector<3>(roots[0], roots[1], roots[2]);
-  return are_separated(A.trace(), l);
+  return are_separated(A.trace(), l, for_values);
 }
 
 // The signed singular values of J from the separated eigenvalues l of J^T J: sigma_3 from the
@@ -226,7 +232,7 @@ inline Vector<3> signed_singular_values(const Matrix<3>& J)
 {
   Matrix<3> A;
   Vector<3> l;
-  if(separated_gram_eigenvalues(J, A, l)) return signed_singular_values_from_gram(J, l);
+  if(separated_gram_eigenvalues(J, A, l, true)) return signed_singular_values_from_gram(J, l);
   Signed_svd<3> svd;
   signed_svd(J, svd);
   return svd.sigma;
