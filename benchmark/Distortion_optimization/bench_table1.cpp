@@ -4,7 +4,8 @@
 // paper's local-only schedule (Algorithms 1-2), on one thread and on two (the paper's Algorithm 3
 // with k = 2 parts, and the parallel sweep over independent sets). Then a map with large volume
 // changes, the exponential stretch (x, y, z) -> (exp(2x), y, z) of the ~50K cube (det J from 0.27
-// to 15), for K, MIPS and symmetric Dirichlet under the three schedules, one thread.
+// to 15), for K, MIPS and symmetric Dirichlet under the three schedules, one thread. Last, the
+// radial map of the ~6K and ~50K cubes with nothing fixed, K and C, Laplacian against Newton steps.
 //
 //   build/benchmark/Distortion_optimization/bench_table1 [largest number of tets, default 1000000]
 
@@ -58,6 +59,15 @@ void cube(double max_volume, std::vector<std::array<double, 3>>& points, std::ve
   DO::tetrahedralize_with_tetgen(corners, faces, max_volume, points, tets);
 }
 
+// A cube of about `count` tetrahedra: TetGen's count for a volume bound is roughly proportional to
+// 1/bound, so one correction.
+void cube_of_about(double count, std::vector<std::array<double, 3>>& points, std::vector<std::array<std::size_t, 4>>& tets)
+{
+  const double bound = 8. / count * 1.5;
+  cube(bound, points, tets);
+  cube(bound * tets.size() / count, points, tets);
+}
+
 K::Point_3 stretch(const K::Point_3& p) { return K::Point_3(std::exp(2 * p.x()), p.y(), p.z()); }
 
 K::Point_3 radial(const K::Point_3& p)
@@ -86,13 +96,9 @@ int main(int argc, char** argv)
                       {DO::Schedule::GLOBAL, 2, sets}, {DO::Schedule::LOCAL, 1, sets},
                       {DO::Schedule::LOCAL, 2, sets}, {DO::Schedule::LOCAL, 2, parts}};
   for(int s = 0; s < 5 && sizes[s] <= largest; ++s) {
-    // TetGen's count for a volume bound is roughly proportional to 1/bound: one correction.
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<std::size_t, 4>> tets;
-    double bound = 8. / sizes[s] * 1.5;
-    cube(bound, points, tets);
-    bound *= tets.size() / sizes[s];
-    cube(bound, points, tets);
+    cube_of_about(sizes[s], points, tets);
 
     // This machine's speed drifts by tens of percent from one second to the next: up to 50K
     // tets every configuration runs five times, interleaved, and the median time is reported
@@ -140,8 +146,7 @@ int main(int argc, char** argv)
   if(largest >= 50000) {
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<std::size_t, 4>> tets;
-    cube(8. / 50000 * 1.5, points, tets);
-    cube(8. / 50000 * 1.5 * tets.size() / 50000., points, tets);
+    cube_of_about(50000, points, tets);
     C3t3 c3t3;
     DO::c3t3_from_tetrahedra(points, tets, c3t3);
     Storage storage;
@@ -173,6 +178,42 @@ int main(int argc, char** argv)
     run(DO::Conformal_dilatation());
     run(DO::MIPS());
     run(DO::Symmetric_dirichlet());
+  }
+  // Nothing fixed: K and C are minimal (1) at the similarities and rigid motions, where their kinks
+  // make the Laplacian's steps crawl; Newton steps take those of a smooth model (MIPS, symmetric
+  // Dirichlet). Default schedule and threshold, one thread, median of three interleaved runs.
+  std::printf("\nradial map, nothing fixed, threshold 1e-4, one thread\n%8s %-12s %-10s %9s %6s %12s %14s %9s\n", "tets",
+              "measure", "global", "seconds", "iters", "before", "after", "inverted");
+  for(double count : {6000., 50000.}) {
+    if(count > largest) break;
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<std::size_t, 4>> tets;
+    cube_of_about(count, points, tets);
+    C3t3 c3t3;
+    DO::c3t3_from_tetrahedra(points, tets, c3t3);
+    const auto nothing_fixed = boost::make_function_property_map<Tr::Vertex_handle>([](Tr::Vertex_handle) { return false; });
+    auto run = [&](const auto& measure) {
+      const DO::Global_solver solvers[] = {DO::Global_solver::REWEIGHTED_LAPLACIAN, DO::Global_solver::PROJECTED_NEWTON};
+      DO::Result results[2];
+      std::vector<double> seconds[2];
+      for(int repeat = 0; repeat < 3; ++repeat)
+        for(int k = 0; k < 2; ++k) {
+          Storage start;
+          DO::map_vertices(c3t3, Target(start), radial);
+          results[k] = CGAL::minimize_distortion(c3t3, Target(start), measure,
+                                                 DO::parameters::global_solver(solvers[k]).vertex_is_constrained_map(nothing_fixed));
+          seconds[k].push_back(results[k].seconds);
+        }
+      for(int k = 0; k < 2; ++k) {
+        std::sort(seconds[k].begin(), seconds[k].end());
+        std::printf("%8zu %-12s %-10s %9.3f %6zu %12.6f %14.10f %9zu\n", tets.size(), measure.name().c_str(),
+                    k == 0 ? "Laplacian" : "Newton", seconds[k][1], results[k].iterations, results[k].initial_energy,
+                    results[k].final_energy, results[k].inverted_cells);
+        std::fflush(stdout);
+      }
+    };
+    run(DO::Conformal_dilatation());
+    run(DO::Isometric_dilatation());
   }
   return 0;
 }

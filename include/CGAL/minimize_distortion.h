@@ -362,7 +362,10 @@ are the points of the triangulation.
                           (`Distortion_optimization::parameters::global_solver()`)}
     \cgalParamType{`Distortion_optimization::Global_solver`: `REWEIGHTED_LAPLACIAN` or `PROJECTED_NEWTON`}
     \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
-    \cgalParamExtra{Newton steps need a measure with a `hessian()`, otherwise the step is the Laplacian's. The Newton
+    \cgalParamExtra{Newton steps need a measure with a `hessian()`, otherwise the step is the Laplacian's; with no
+                    vertex constrained or sliding, `Conformal_dilatation` and `Condition_number` take the Newton steps of
+                    `MIPS`, `Isometric_dilatation` those of `Symmetric_dirichlet` (the same minimizers, without the
+                    kink there), and the line search decides on the measure itself. The Newton
                     system of a complex (3 unknowns per free vertex) fills in too much to factor: it is solved
                     inexactly, by at most 60 Jacobi-preconditioned conjugate gradient iterations (truncated Newton).
                     Sliding vertices take the step restricted to their tangent planes.}

@@ -349,7 +349,8 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
                           (`Distortion_optimization::parameters::global_solver()`)}
     \cgalParamType{`Distortion_optimization::Global_solver`}
     \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
-    \cgalParamExtra{Newton steps apply to measures with a `hessian()` (not to the default `Conformal_dilatation`).}
+    \cgalParamExtra{Newton steps apply to measures with a `hessian()`; the default `Conformal_dilatation` takes the
+                    Laplacian's steps, except on a complex with no vertex constrained or sliding (then MIPS's Newton steps).}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}
