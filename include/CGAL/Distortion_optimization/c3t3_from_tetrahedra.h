@@ -26,10 +26,10 @@ namespace Distortion_optimization {
 
 namespace internal {
 
-// The tetrahedra must form a manifold complex, and build_triangulation() only notices a facet
-// shared by three of them: a tetrahedron listed twice, or two that meet only at an edge or a
-// vertex, would make a complex whose boundary is not a surface. Around each edge and each vertex,
-// the tetrahedra must be connected through facets containing it; the message names the cells.
+// The tetrahedra must form a manifold complex, and build_triangulation() would not name the cells
+// of a facet shared by three of them, nor notice a tetrahedron listed twice, or two that meet only
+// at an edge or a vertex (a complex whose boundary is not a surface). Around each edge and each
+// vertex, the tetrahedra must be connected through facets containing it; the message names the cells.
 //
 // Everything is found vertex by vertex in the vertices' stars (flat arrays, no tree of keys: at 1M
 // tetrahedra a map-based check took seconds): a facet or a tetrahedron is met at its smallest
@@ -41,7 +41,7 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
 {
   using Index = std::uint32_t;
   const std::size_t count = tetrahedra.size();
-  if(count >= std::numeric_limits<Index>::max() / 6) throw Invalid_input("too many tetrahedra");
+  if(count >= std::numeric_limits<Index>::max() / 10) throw Invalid_input("too many tetrahedra");
   std::vector<std::array<std::size_t, 4>> sorted(tetrahedra);
   std::size_t vertices = 0;
   for(auto& k : sorted) {
@@ -192,7 +192,7 @@ c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
   std::vector<typename Tr::Vertex_handle> handles;
   const std::map<std::array<int, 3>, typename Tr::Cell::Surface_patch_index> no_patches;
   if(!CGAL::build_triangulation<Tr, true>(tr, tr_points, cells, no_patches, handles))
-    throw Invalid_input("the tetrahedra do not form a manifold complex (a facet is shared by more than two)");
+    throw Invalid_input("the tetrahedra do not form a complex CGAL can build");
   c3t3.clear();
   c3t3.triangulation().swap(tr);
   c3t3.rescan_after_load_of_triangulation();

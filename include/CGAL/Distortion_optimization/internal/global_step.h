@@ -272,7 +272,7 @@ private:
     double& last = newton ? last_newton_t_ : last_t_;
     const double cap = !(last > 0) ? 1. : newton ? std::clamp(2 * last, 2., 8.) : 2 * last;
     double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
-    // A model's slope is not the measure's: then any decrease is taken, within 8 halvings (a
+    // A model's slope is not the measure's: then any decrease is taken, within 8 trials (a
     // model's step shorter than that is not worth the trials: the Laplacian's follows).
     const bool model = newton && !is_own_model;
     const bool moved = line_search(direction, t, model ? 0. : slope, newton ? 1. : 0., model ? 8 : 30);
