@@ -147,8 +147,10 @@ public:
       previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)),
       newton_(newton && measures_internal::Has_hessian<Model, n>::value && (is_own_model || is_unconstrained())) {}
 
-  // Whether the steps solve Newton's system (else the reweighted Laplacian's).
+  // Whether the steps solve Newton's system (else the reweighted Laplacian's), and whether it is a
+  // smooth model's rather than the measure's.
   bool is_newton() const { return newton_; }
+  bool takes_model_steps() const { return newton_ && !is_own_model; }
 
   // The harmonic start (see the file comment), with the cell weights w(c) (for the default
   // weights, the volume-weighted cotangent Laplacian). Skipped where the harmonic map is not
