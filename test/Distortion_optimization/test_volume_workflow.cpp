@@ -6,6 +6,7 @@
 // kept, sizes that follow the input's scale, determinism, bad input), then the package's start
 // maps and optimizer on the result.
 
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/compute_distortion.h>
@@ -28,11 +29,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -368,6 +373,70 @@ TEST(VolumeWorkflow, StarShapedToBallThenOptimizedKeepsEveryCell)
     EXPECT_LT(r.final_energy, r.initial_energy) << name;
     EXPECT_EQ(r.inverted_cells, 0u) << name;
     EXPECT_EQ(inverted(c3t3, ball), 0u) << name;
+  }
+}
+
+// The ray from the centre through a boundary vertex leaves the domain at that vertex, shared by
+// several facets: the ball map must find the exit all the same. Constructing the ray's
+// intersections in double arithmetic missed every facet of one vertex of this cube (the tool's
+// --start ball on it at --cell-size 0.1 refused it as if the centre were outside).
+TEST(VolumeWorkflow, BallMapFindsTheExitOfRaysThroughBoundaryVertices)
+{
+  // The tool's path: this cube (as an OFF file), Mesh_3, the tetrahedra into a new complex.
+  std::istringstream off(R"(OFF
+8 12 0
+-0.8059959770082348 -0.8059959770082348 -0.8059959770082348
+-0.8059959770082348 -0.8059959770082348 0.8059959770082348
+-0.8059959770082348 0.8059959770082348 -0.8059959770082348
+-0.8059959770082348 0.8059959770082348 0.8059959770082348
+0.8059959770082348 -0.8059959770082348 -0.8059959770082348
+0.8059959770082348 -0.8059959770082348 0.8059959770082348
+0.8059959770082348 0.8059959770082348 -0.8059959770082348
+0.8059959770082348 0.8059959770082348 0.8059959770082348
+3 0 1 3
+3 0 3 2
+3 4 6 7
+3 4 7 5
+3 0 4 5
+3 0 5 1
+3 2 3 7
+3 2 7 6
+3 0 2 6
+3 0 6 4
+3 1 5 7
+3 1 7 3
+)");
+  Surface cube;
+  ASSERT_TRUE(CGAL::IO::read_OFF(off, cube));
+  const C3t3 meshed = DO::mesh_interior(cube, DOP::cell_size(0.1));
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  std::map<Tr::Vertex_handle, std::size_t> index;
+  for(auto c = meshed.cells_in_complex_begin(); c != meshed.cells_in_complex_end(); ++c) {
+    std::array<std::size_t, 4> tet;
+    for(int i = 0; i < 4; ++i) {
+      const auto [it, fresh] = index.emplace(c->vertex(i), points.size());
+      const Point p = position(meshed, c, i);
+      if(fresh) points.push_back({p.x(), p.y(), p.z()});
+      tet[i] = it->second;
+    }
+    tets.push_back(tet);
+  }
+  C3t3 c3t3;
+  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  Targets ball;
+  ASSERT_NO_THROW(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)));
+  // Every boundary vertex on the unit sphere, every other one inside.
+  std::set<Tr::Vertex_handle> boundary;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        for(int j = 1; j < 4; ++j) boundary.insert(c->vertex((i + j) % 4));
+  ASSERT_GT(boundary.size(), 1000u);
+  for(const auto& [v, p] : ball) {
+    const double r = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point(0, 0, 0))));
+    if(boundary.count(v)) EXPECT_NEAR(r, 1., 1e-12);
+    else EXPECT_LT(r, 1.);
   }
 }
 

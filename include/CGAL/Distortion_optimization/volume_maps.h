@@ -165,14 +165,20 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
     const auto u = p - center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
     if(r == 0) return Point_3(0, 0, 0);
-    // The farthest intersection of the ray with the boundary: for a star-shaped domain there is one
-    // exit point (rays through edges or vertices may report it several times).
-    std::vector<typename Tree::template Intersection_and_primitive_id<typename K::Ray_3>::Type> hits;
-    tree.all_intersections(typename K::Ray_3(center, u), std::back_inserter(hits));
+    // Where the ray leaves the domain: a star-shaped domain has one exit point (a ray through an
+    // edge or a vertex meets it in several facets). The facets the ray meets come from the exact
+    // predicate; the exit is where the ray meets their planes. Constructing the intersections
+    // instead missed them all, in double arithmetic, where the ray passes through a vertex of the
+    // boundary, as it does for every boundary vertex (a Mesh_3 cube at cell size 0.1).
+    std::vector<typename Tree::Primitive_id> facets;
+    tree.all_intersected_primitives(typename K::Ray_3(center, u), std::back_inserter(facets));
     double R = 0;
-    for(const auto& h : hits)
-      if(const Point_3* q = boost::get<Point_3>(&h.first))
-        R = std::max(R, std::sqrt(CGAL::to_double(CGAL::squared_distance(center, *q))));
+    for(const auto& facet : facets) {
+      const Triangle& t = *facet;
+      const auto normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+      const double along = CGAL::to_double(normal * u);   // 0: the ray is in the facet's plane
+      if(along != 0) R = std::max(R, r * CGAL::to_double(normal * (t[0] - center)) / along);
+    }
     if(!(R > 0)) throw Invalid_input("a ray from the centre misses the boundary: is the centre inside the domain?");
     const double s = 1. / R;
     return Point_3(s * CGAL::to_double(u.x()), s * CGAL::to_double(u.y()), s * CGAL::to_double(u.z()));
