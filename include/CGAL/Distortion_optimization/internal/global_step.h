@@ -133,6 +133,22 @@ template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
 template <> struct Newton_model<Condition_number> { using type = MIPS; };
 template <> struct Newton_model<Isometric_dilatation> { using type = Symmetric_dirichlet; };
 
+// An attempt that may fail, retried less often after failures: after k in a row, the next
+// 2^(k-1) occasions (at most 2^16) skip it.
+struct Backoff
+{
+  std::size_t failures = 0, skips = 0;
+  // Whether to make the attempt at this occasion; a skipped occasion uses up one skip.
+  bool tries()
+  {
+    if(skips == 0) return true;
+    --skips;
+    return false;
+  }
+  void succeeded() { failures = 0; }
+  void failed() { skips = std::size_t(1) << std::min<std::size_t>(failures++, 16); }
+};
+
 template <class State>
 class Global_step
 {
@@ -182,13 +198,12 @@ public:
     if(system_.size() == 0) return false;
     blocked_ = newton_;
     // Where a model's step finds no decrease, the next 1, 2, 4, ... steps are the Laplacian's.
-    const bool newton = newton_ && (is_own_model || skip_model_ == 0);
-    if(newton_ && !newton) --skip_model_;
+    const bool newton = newton_ && (is_own_model || model_steps_.tries());
     if(newton && step_along(true)) {
-      model_failures_ = 0;
+      model_steps_.succeeded();
       return true;
     }
-    if(newton && !is_own_model) skip_model_ = std::size_t(1) << std::min<std::size_t>(model_failures_++, 16);
+    if(newton && !is_own_model) model_steps_.failed();
     return step_along(false);
   }
 
@@ -341,12 +356,9 @@ private:
   void solve_by_factorization(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& b, Eigen::MatrixXd& solution)
   {
     bool solved = false;
-    if(factorization_ && skip_lagged_ == 0) {
+    if(lagged_.tries() && factorization_) {
       solved = system_.solve(H, *factorization_, b, solution, 6, 1e-3) && solution.allFinite();
-      lagged_failures_ = solved ? 0 : lagged_failures_ + 1;
-      if(!solved) skip_lagged_ = std::size_t(1) << std::min<std::size_t>(lagged_failures_ - 1, 16);
-    } else if(skip_lagged_ > 0) {
-      --skip_lagged_;
+      solved ? lagged_.succeeded() : lagged_.failed();
     }
     if(!solved) {
       if(!factorization_) {
@@ -459,8 +471,7 @@ private:
   struct No_model {};
   std::conditional_t<is_own_model, No_model, Model> model_;
   std::unique_ptr<Factorization> factorization_;
-  std::size_t lagged_failures_ = 0, skip_lagged_ = 0;   // of the lagged factorization, in a row
-  std::size_t model_failures_ = 0, skip_model_ = 0;     // of a model's steps, in a row
+  Backoff lagged_, model_steps_;   // the lagged factorization's solves, a model's steps
 };
 
 } // namespace internal
