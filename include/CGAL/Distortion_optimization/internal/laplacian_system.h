@@ -107,6 +107,36 @@ public:
 
   const Eigen::SparseMatrix<double>& hessian() const { return H_; }
 
+  // A preconditioner for H (hessian()) that does not depend on the map: an incomplete Cholesky
+  // factor of the source's Laplacian (P with the unit factors), applied to each of a vertex's n
+  // coordinates (on threads). Where H is nearly singular in directions that P is not (MIPS's
+  // Hessian in every cell's scaling, the similarities being its minimizers), Jacobi-preconditioned
+  // conjugate gradients stall and this one converges. Factored at the first call (refills P).
+  class Coordinatewise_laplacian
+  {
+  public:
+    Coordinatewise_laplacian(Laplacian_system& system) : workers_(system.workers_)
+    {
+      system.refill(nullptr, nullptr, nullptr);
+      factor_.compute(system.P_);
+    }
+    bool ok() const { return factor_.info() == Eigen::Success; }
+    Eigen::VectorXd solve(const Eigen::VectorXd& r) const
+    {
+      const Eigen::Index size = r.size() / n;
+      Eigen::VectorXd z(r.size());
+      workers_.for_each(n, 1, [&](std::size_t d) {
+        const Eigen::VectorXd coordinate = Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<n>>(r.data() + d, size);
+        Eigen::Map<Eigen::VectorXd, 0, Eigen::InnerStride<n>>(z.data() + d, size) = factor_.solve(coordinate);
+      });
+      return z;
+    }
+
+  private:
+    const Workers& workers_;
+    Eigen::IncompleteCholesky<double> factor_;
+  };
+
   const Eigen::SparseMatrix<double>& matrix() const { return P_; }
 
   // Solves A X = B by preconditioned conjugate gradients (the recurrences of Eigen's
