@@ -468,10 +468,13 @@ private:
     for(int k = 0; k < trials && t > 0; ++k, t = k == 1 && natural > 0 && t > natural ? natural : 0.5 * t) {
       place(t);
       if(state_.accept_trial(moving.size(), moving_cell, e0, State::armijo * t * slope, true, boundary_ok)) {
-        // A trial beyond the natural length can pass with little gain: twice a Newton step of
-        // K's model lands across K's kink about as far as it started, and of a measure's own
-        // convex part back where it started. The natural length is tried too; the lower is kept.
-        if(natural > 0 && t > natural) {
+        // On tetrahedra a trial beyond the natural length can pass with little gain: twice a
+        // Newton step of K's model lands across K's kink about as far as it started, and of a
+        // measure's own convex part back where it started. The natural length is tried too; the
+        // lower is kept (69K cube x|x|, symmetric Dirichlet: 3 iterations and 0.60 s against 4
+        // and 0.72 s). Triangle meshes keep the longer step (their Newton directions are exact:
+        // mannequin-devil reaches SLIM's energy in 0.47 s against 0.54 s with both tried).
+        if(n == 3 && natural > 0 && t > natural) {
           const std::vector<Vec> accepted = x;
           place(natural);
           if(state_.accept_trial(moving.size(), moving_cell, state_.energy(), 0., true, boundary_ok)) t = natural;
