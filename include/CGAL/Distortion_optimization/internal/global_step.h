@@ -17,8 +17,8 @@
 //    positive semi-definite (cell_hessian.h). On triangle meshes: a few conjugate gradient
 //    iterations preconditioned by the last factorization of H, or a new sparse LDL^T
 //    factorization (ordering computed once) when they do not converge; on tetrahedral meshes,
-//    whose factorizations fill in too much, truncated Newton (Jacobi-preconditioned conjugate
-//    gradients, cut short). The step is bounded and searched as the Laplacian's, and gives way to
+//    whose factorizations fill in too much, truncated Newton (conjugate gradients preconditioned
+//    by Jacobi's diagonal or, for a smooth model's steps, the Laplacian's, cut short). The step is bounded and searched as the Laplacian's, and gives way to
 //    it when it cannot be taken.
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
 //  planes (Newton's: the step restricted to them) and are projected back onto their surface at
@@ -335,10 +335,11 @@ private:
         // per step at 5.10^4 tetrahedra): truncated Newton (Nash, "Newton-type minimization via
         // the Lanczos method", 1984), preconditioned conjugate gradients from 0, cut at 60
         // iterations or a residual of 1e-2; every iterate from 0 descends. Jacobi's preconditioner,
-        // except that a model's steps (near the similarities, nothing fixed) take the Laplacian's
-        // once a solve did not converge (69K-tetrahedron cube, K through MIPS: 16 s and 100
-        // iterations for K - 1 = 3e-6, against 4.9 s and 20). Where cells' stiffnesses differ by
-        // orders of magnitude (after untangling), the Laplacian's is the worse of the two.
+        // except that a model's steps (nothing fixed) take the Laplacian's for the rest of the run
+        // once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in each cell's
+        // scaling (69K-tetrahedron cube mapped by x|x|, K through MIPS: 16.3 s and 96 iterations
+        // against 4.7 s and 18). Where cells' stiffnesses differ by orders of magnitude (after
+        // untangling), the Laplacian's is the worse of the two: the measures' own steps keep Jacobi's.
         if(!laplacian_preconditioner_) {
           Eigen::DiagonalPreconditioner<double> jacobi;
           jacobi.compute(H);
@@ -471,14 +472,14 @@ private:
         // On tetrahedra a trial beyond the natural length can pass with little gain: twice a
         // Newton step of K's model lands across K's kink about as far as it started, and of a
         // measure's own convex part back where it started. The natural length is tried too; the
-        // lower is kept (69K cube x|x|, symmetric Dirichlet: 3 iterations and 0.60 s against 4
-        // and 0.72 s). Triangle meshes keep the longer step (their Newton directions are exact:
-        // mannequin-devil reaches SLIM's energy in 0.47 s against 0.54 s with both tried).
+        // lower is kept (69K cube x|x|, symmetric Dirichlet, interleaved runs: 3 iterations and
+        // 0.48-0.61 s against 4 and 0.61-0.73 s). Triangle meshes keep the longer step (their
+        // Newton directions come from a factorization, nearly exact: mannequin-devil reaches
+        // SLIM's energy in 0.47 s against 0.54 s with both tried).
         if(n == 3 && natural > 0 && t > natural) {
-          const std::vector<Vec> accepted = x;
           place(natural);
           if(state_.accept_trial(moving.size(), moving_cell, state_.energy(), 0., true, boundary_ok)) t = natural;
-          else x = accepted;
+          else place(t);   // the same bits as the committed trial
         }
         if(guard) guard->rebuild(x);
         return true;

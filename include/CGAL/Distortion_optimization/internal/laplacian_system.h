@@ -111,7 +111,7 @@ public:
   // factor of the source's Laplacian (P with the unit factors), applied to each of a vertex's n
   // coordinates (on threads). Where H is nearly singular in directions that P is not (MIPS's
   // Hessian in every cell's scaling, the similarities being its minimizers), Jacobi-preconditioned
-  // conjugate gradients stall and this one converges. Factored at the first call (refills P).
+  // conjugate gradients stall and this one goes much further. Factored at construction (refills P).
   class Coordinatewise_laplacian
   {
   public:

@@ -175,9 +175,9 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
     // to gain: near a kink (K, C, V at their minimum) the last digits come only linearly. No
     // sweep follows it either (on the 6K cube with nothing fixed, it took a sixth of the run).
     const double above = std::abs(previous - floor);
-    const bool at_floor = options.threshold > 0 && std::abs(energy - floor) <= 1e-9 * std::abs(energy);
-    const auto has_converged = [&] { return at_floor || !(previous - energy > options.threshold * above); };
-    if(steps.sweeps_on_stall() && !at_floor && (has_converged() || steps.global_step_was_blocked())) {
+    const auto at_floor = [&] { return options.threshold > 0 && std::abs(energy - floor) <= 1e-9 * std::abs(energy); };
+    const auto has_converged = [&] { return at_floor() || !(previous - energy > options.threshold * above); };
+    if(steps.sweeps_on_stall() && !at_floor() && (has_converged() || steps.global_step_was_blocked())) {
       steps.sweep_after_stall();
       energy = std::min(energy, state.energy() * normalization);
     }
