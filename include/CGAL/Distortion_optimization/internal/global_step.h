@@ -18,8 +18,8 @@
 //    iterations preconditioned by the last factorization of H, or a new sparse LDL^T
 //    factorization (ordering computed once) when they do not converge; on tetrahedral meshes,
 //    whose factorizations fill in too much, truncated Newton (conjugate gradients preconditioned
-//    by Jacobi's diagonal or, for a smooth model's steps, the Laplacian's, cut short). The step is bounded and searched as the Laplacian's, and gives way to
-//    it when it cannot be taken.
+//    by Jacobi's diagonal or, for a smooth model's steps, the Laplacian's, cut short). The step
+//    is bounded and searched as the Laplacian's, and gives way to it when it cannot be taken.
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
 //  planes (Newton's: the step restricted to them) and are projected back onto their surface at
 //  every trial; the harmonic start keeps them where they are.
