@@ -243,6 +243,26 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   }
   // Those cells are repaired by untangling with the boundary sliding on the sphere (Fig. 13).
   ASSERT_GT(flat, 0u);
+  // They are scattered along the cube's edges, and their own vertices suffice to untangle them
+  // (the first part untangle() tries): every other vertex stays where the ball map put it.
+  Target_storage untangled = ball;
+  std::unordered_set<Vertex_handle> of_flat_cells;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(CGAL::orientation(ball.at(c->vertex(0)), ball.at(c->vertex(1)), ball.at(c->vertex(2)), ball.at(c->vertex(3))) !=
+       CGAL::POSITIVE)
+      for(int i = 0; i < 4; ++i) of_flat_cells.insert(c->vertex(i));
+  const DO::Untangle_result t = DO::untangle(c3t3, Target_map(untangled), DO::parameters::sliding_boundary(DO::Sphere_surface()));
+  EXPECT_EQ(t.inverted_before, flat);
+  EXPECT_EQ(t.inverted_after, 0u);
+  EXPECT_EQ(inverted(c3t3, untangled), 0u);
+  std::size_t moved = 0;
+  for(const auto& kv : ball) {
+    if(!(untangled.at(kv.first) == kv.second)) ++moved;
+    if(!of_flat_cells.count(kv.first)) {
+      EXPECT_EQ(untangled.at(kv.first), kv.second);
+    }
+  }
+  EXPECT_GT(moved, 0u);
   const auto u = CGAL::minimize_distortion(c3t3, Target_map(ball), DO::Symmetric_dirichlet(),
                                            DO::parameters::untangle_first(true, DO::parameters::sliding_boundary(DO::Sphere_surface())));
   EXPECT_EQ(u.inverted_start_cells, flat);
