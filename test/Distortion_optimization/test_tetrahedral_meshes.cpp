@@ -71,12 +71,19 @@ Point_3 radial(const Point_3& p)   // f0(x) = x |x|, the start map of the paper'
   return Point_3(r * p.x(), r * p.y(), r * p.z());
 }
 
+// Whether the cell (a handle or an iterator) keeps its orientation under the map (exact predicate).
+template <class Cell>
+bool is_positive(const Cell& c, const Target_storage& target)
+{
+  return CGAL::orientation(target.at(c->vertex(0)), target.at(c->vertex(1)), target.at(c->vertex(2)),
+                           target.at(c->vertex(3))) == CGAL::POSITIVE;
+}
+
 std::size_t inverted(const C3t3& c3t3, const Target_storage& target)
 {
   std::size_t count = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    if(CGAL::orientation(target.at(c->vertex(0)), target.at(c->vertex(1)), target.at(c->vertex(2)),
-                         target.at(c->vertex(3))) != CGAL::POSITIVE) ++count;
+    if(!is_positive(c, target)) ++count;
   return count;
 }
 
@@ -248,8 +255,7 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   Target_storage untangled = ball;
   std::unordered_set<Vertex_handle> of_flat_cells;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    if(CGAL::orientation(ball.at(c->vertex(0)), ball.at(c->vertex(1)), ball.at(c->vertex(2)), ball.at(c->vertex(3))) !=
-       CGAL::POSITIVE)
+    if(!is_positive(c, ball))
       for(int i = 0; i < 4; ++i) of_flat_cells.insert(c->vertex(i));
   const DO::Untangle_result t = DO::untangle(c3t3, Target_map(untangled), DO::parameters::sliding_boundary(DO::Sphere_surface()));
   EXPECT_EQ(t.inverted_before, flat);
