@@ -227,6 +227,9 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   C3t3 c3t3;
   const auto handles = DO::c3t3_from_tetrahedra(points, tets, c3t3);
   ASSERT_EQ(c3t3.number_of_cells_in_complex(), tets.size());
+  // A ball: with its infinite cells on the boundary facets, the data structure is a valid
+  // triangulated 3-sphere (neighbours, vertex cells, orientation, Euler characteristic).
+  EXPECT_TRUE(c3t3.triangulation().tds().is_valid());
   Target_storage storage;
   for(std::size_t i = 0; i < points.size(); ++i)
     if(handles[i] != Vertex_handle()) storage[handles[i]] = radial(Point_3(points[i][0], points[i][1], points[i][2]));
@@ -557,8 +560,16 @@ TEST(TetrahedralMeshes, BadInput)
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedra 0, 1 and 2 share the facet (0, 1, 2)"), std::string::npos) << e.what();
   }
-  // Two tetrahedra sharing a facet are a manifold complex.
-  EXPECT_EQ(DO::c3t3_from_tetrahedra(star, {{0, 1, 2, 3}, {0, 2, 1, 6}}, c3t3).size(), star.size());
+  // Two tetrahedra sharing a facet are a manifold complex; the points in neither get no vertex.
+  const auto pair = DO::c3t3_from_tetrahedra(star, {{0, 1, 2, 3}, {0, 2, 1, 6}}, c3t3);
+  ASSERT_EQ(pair.size(), star.size());
+  EXPECT_EQ(pair[4], Vertex_handle());
+  EXPECT_EQ(pair[5], Vertex_handle());
+  EXPECT_EQ(c3t3.triangulation().number_of_vertices(), 5u);
+  EXPECT_EQ(c3t3.number_of_cells_in_complex(), 2u);
+  EXPECT_TRUE(c3t3.triangulation().tds().is_valid());
+  const auto first = pair[3]->cell();   // the tetrahedron (0, 1, 2, 3), across (0, 1, 2) from the other
+  EXPECT_TRUE(first->neighbor(first->index(pair[3]))->has_vertex(pair[6]));
 
   // An inverted start under a normalized measure names the cell and writes nothing.
   const auto handles = DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 4}, {1, 3, 2, 4}}, c3t3);
