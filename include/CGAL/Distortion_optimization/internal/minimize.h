@@ -75,16 +75,16 @@ public:
     if(guard_) state.set_boundary_guard(guard_.get());
     if(options.schedule != Schedule::LOCAL || options.harmonic_start)
       global_step_ = std::make_unique<Global_step<State>>(state, options.global_solver == Global_solver::PROJECTED_NEWTON);
-    // The default schedule: Newton's steps alone on triangle meshes, where a local sweep between
-    // them costs more than it gains (time to SLIM's energy, bench_parameterization: lion-head
-    // 0.29 s against 0.35 s, mannequin-devil 1.03 s against 1.50 s); otherwise alternating, as the
+    // The default schedule: Newton's steps alone, where a local sweep between them costs more
+    // than it gains (time to SLIM's energy, bench_parameterization: lion-head 0.29 s against
+    // 0.35 s, mannequin-devil 1.03 s against 1.50 s; the exponential stretch of a 69K cube, MIPS:
+    // 0.78 s against 0.88 s, symmetric Dirichlet 0.42 s against 0.44 s); otherwise alternating, as the
     // reweighted Laplacian's steps need the sweeps (mannequin-devil: 1.36 s against 1.70 s alone).
     // Also Newton's steps alone where they are a smooth model's (global_step.h), as the measure's
     // local moves gain little near its kink (6K cube, nothing fixed, K: 0.16 s against 0.20 s).
     // A step that one cell's safe step holds back may gain almost nothing: a sweep then follows it
     // in the same iteration (minimize()), so that the run stops only when neither gains.
-    const bool newton_alone = global_step_ && ((n == 2 && global_step_->is_newton()) || global_step_->takes_model_steps());
-    schedule_ = options.schedule.value_or(newton_alone ? Schedule::GLOBAL : Schedule::ALTERNATING);
+    schedule_ = options.schedule.value_or(global_step_ && global_step_->is_newton() ? Schedule::GLOBAL : Schedule::ALTERNATING);
   }
 
   // After the targets were replaced from outside the steps (untangling restores a better map).

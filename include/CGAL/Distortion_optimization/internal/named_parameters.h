@@ -35,7 +35,7 @@ struct Options
   double threshold = 1e-4;
   Local_solver solver = Local_solver::GRADIENT_DESCENT;
   Vertex_order order = Vertex_order::SORTED_PER_SWEEP;
-  // Unset: global steps only where they are Newton's in 2D, else alternating (Steps).
+  // Unset: global steps only where they are Newton's, else alternating (Steps).
   std::optional<Schedule> schedule;
   bool harmonic_start = true;   // false by default with Schedule::LOCAL (read_options)
   bool global_injectivity = false;   // guard the boundary of free boundary vertices
