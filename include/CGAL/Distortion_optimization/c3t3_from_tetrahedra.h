@@ -66,7 +66,11 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
     while(parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  const auto position = [&](std::size_t t, std::size_t v) { return static_cast<int>(std::find(sorted[t].begin(), sorted[t].end(), v) - sorted[t].begin()); };
+  // The position of v in sorted[t], which holds it: how many of its vertices are smaller.
+  const auto position = [&](std::size_t t, std::size_t v) {
+    const auto& s = sorted[t];
+    return int(s[0] < v) + int(s[1] < v) + int(s[2] < v);
+  };
   // The incidence of the edge (u, w) of t: 0..5 for the positions (0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3).
   const auto edge_incidence = [&](std::size_t t, std::size_t u, std::size_t w) {
     const int i = position(t, std::min(u, w)), j = position(t, std::max(u, w));
@@ -99,11 +103,13 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
           facets.push_back({vw[0], vw[1], star[k]});
         }
     }
-    std::stable_sort(own.begin(), own.end(), [&](Index a, Index b) { return sorted[a] < sorted[b]; });
+    // (Sorts break ties by tetrahedron, as the stars list them: the stable order, without
+    // stable_sort's buffer allocated at every vertex.)
+    std::sort(own.begin(), own.end(), [&](Index a, Index b) { return std::tie(sorted[a], a) < std::tie(sorted[b], b); });
     for(std::size_t i = 1; i < own.size(); ++i)
       if(sorted[own[i - 1]] == sorted[own[i]])
         throw Invalid_input("tetrahedra " + name(own[i - 1]) + " and " + name(own[i]) + " have the same vertices");
-    std::stable_sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) { return std::tie(a.v, a.w) < std::tie(b.v, b.w); });
+    std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) { return std::tie(a.v, a.w, a.t) < std::tie(b.v, b.w, b.t); });
     for(std::size_t i = 0; i < facets.size(); ++i) {
       const Facet& f = facets[i];
       std::size_t j = i + 1;
@@ -134,7 +140,7 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
     for(Index k = first[u]; k < first[u + 1]; ++k)
       for(std::size_t w : sorted[star[k]])
         if(w > u) around.push_back({w, star[k]});
-    std::stable_sort(around.begin(), around.end(), [](const Around& a, const Around& b) { return a.w < b.w; });
+    std::sort(around.begin(), around.end(), [](const Around& a, const Around& b) { return std::tie(a.w, a.t) < std::tie(b.w, b.t); });
     for(std::size_t i = 0; i < around.size();) {
       const std::size_t w = around[i].w, lowest = around[i].t;
       const Index r = root(edge_incidence(lowest, u, w));

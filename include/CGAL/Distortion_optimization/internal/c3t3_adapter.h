@@ -57,6 +57,7 @@ public:
     const Triangulation& tr = c3t3.triangulation();
     auto point = tr.geom_traits().construct_point_3_object();
     std::unordered_map<Vertex_handle, std::uint32_t> index;
+    index.reserve(tr.number_of_vertices());
     const auto index_of = [&](Vertex_handle v) {
       auto inserted = index.emplace(v, static_cast<std::uint32_t>(vertex_of.size()));
       if(inserted.second) {
@@ -72,6 +73,7 @@ public:
     };
     using P = typename GeomTraits::Point_3;
     std::vector<std::pair<typename Simplicial_map<3>::Cell, Matrix<3>>> cells;
+    cells.reserve(c3t3.number_of_cells_in_complex());
     double largest = 0;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       typename Simplicial_map<3>::Cell cell;

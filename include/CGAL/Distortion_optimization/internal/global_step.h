@@ -188,10 +188,12 @@ public:
     }
     for(std::size_t v = 0; v < direction.size(); ++v) direction[v] -= state_.targets()[v];
     // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
-    // energy drops.
+    // energy drops, three times at most: a smaller fraction is no longer a start, and where the
+    // start is already better (the radial map of the 54K Mesh_3 cube under K) the 30 trials of a
+    // step took a tenth of the run.
     const double t_max = max_step(direction, 1 / 0.9);
     double t = t_max > 1 ? 1. : 0.9 * t_max;
-    return line_search(direction, t, 0.);
+    return line_search(direction, t, 0., 0., 4);
   }
 
   // One preconditioned global step. Returns true if the map changed. A Newton step that cannot be
