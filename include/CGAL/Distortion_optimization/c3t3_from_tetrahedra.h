@@ -217,6 +217,9 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
         edges.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), {c, m}});
       }
     }
+  // Tetrahedra in space have a boundary; without one (the five of a 4-simplex's boundary, say)
+  // they overlap and there is no infinite cell to give the infinite vertex.
+  if(edges.empty()) throw Invalid_input("every facet is shared by two tetrahedra: the complex has no boundary, so its cells overlap");
   infinite->set_cell(edges.front().second.first);
   std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   for(std::size_t e = 0; e < edges.size(); e += 2) {
@@ -240,7 +243,7 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
 /// \throws Invalid_input for an index out of range, a non-finite point, a flat tetrahedron (exact
 /// predicate, the message names it), a tetrahedron listed twice, or tetrahedra that do not form a
 /// manifold complex: a facet in more than two, or two that meet only at an edge or a vertex (the
-/// message names them).
+/// message names them), or a complex without boundary (its cells overlap).
 template <class C3T3>
 std::vector<typename C3T3::Triangulation::Vertex_handle>
 c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
