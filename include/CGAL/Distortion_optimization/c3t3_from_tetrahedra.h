@@ -34,8 +34,9 @@ namespace internal {
 // vertex, where the tetrahedra sharing it are paired; each pairing joins, in a union-find over the
 // (tetrahedron, vertex) and (tetrahedron, edge) incidences, the incidences of the facet's three
 // vertices and three edges. The cells around a vertex or an edge are then connected iff its
-// incidences have one root. The pairings are also the complex's adjacency: `across[4t + j]` is the
-// tetrahedron on the other side of the facet opposite tetrahedra[t][j], or `no_tetrahedron`.
+// incidences have one root. The pairings are also the complex's adjacency: `across[4t + j]` is
+// 4t' + j' for the facet opposite tetrahedra[t][j], which is the facet opposite
+// tetrahedra[t'][j'], or `no_tetrahedron` on the boundary.
 constexpr std::uint32_t no_tetrahedron = std::numeric_limits<std::uint32_t>::max();
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                                       std::vector<std::uint32_t>& across)
@@ -119,8 +120,9 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
                             name(u) + ", " + name(f.v) + ", " + name(f.w) + "): the complex is not manifold there");
       if(j - i == 2) {
         const Index a = f.t, b = facets[i + 1].t;
-        across[4 * a + opposite(a, u, f.v, f.w)] = b;
-        across[4 * b + opposite(b, u, f.v, f.w)] = a;
+        const Index facet_of_a = 4 * a + opposite(a, u, f.v, f.w), facet_of_b = 4 * b + opposite(b, u, f.v, f.w);
+        across[facet_of_a] = facet_of_b;
+        across[facet_of_b] = facet_of_a;
         const std::array<std::size_t, 3> triangle = {u, f.v, f.w};
         for(int m = 0; m < 3; ++m) {
           const std::size_t x = triangle[m], y = triangle[(m + 1) % 3];
@@ -201,10 +203,7 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
     for(int j = 0; j < 4; ++j) {
       const std::uint32_t other = across[4 * t + j];
       if(other != no_tetrahedron) {
-        if(other < t) continue;
-        int i = 0;
-        while(across[4 * other + i] != t) ++i;
-        tds.set_adjacency(finite[t], j, finite[other], i);
+        if(other / 4 > t) tds.set_adjacency(finite[t], j, finite[other / 4], other % 4);
         continue;
       }
       const auto& k = cells[t];
