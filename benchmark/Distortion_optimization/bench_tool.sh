@@ -11,16 +11,9 @@
 #
 #   bash benchmark/Distortion_optimization/bench_tool.sh [cell_size [repeats]]
 #   (default cell size 0.0875: about 54K tetrahedra; run after scripts/test.sh)
-set -euo pipefail
-ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+source "$(dirname "${BASH_SOURCE[0]}")/tool_common.sh"
 CELL=${1:-0.0875}
 REPEATS=${2:-3}
-TOOL=$ROOT/build/examples/Distortion_optimization/distortion_optimizer
-[ -x "$TOOL" ] || { echo "build the tool first (bash scripts/test.sh)" >&2; exit 1; }
-OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
-
-field() { sed -n "s/^  \"$2\": \\(.*\\),\\?$/\\1/p" "$1" | sed 's/,$//' | head -1; }
 
 cat > "$OUT/cube.off" <<'EOF'
 OFF

@@ -10,17 +10,10 @@
 #
 #   bash benchmark/Distortion_optimization/bench_untangle.sh [data_dir [threads]]
 #   (default data dir: ../shared/data/abcd beside the repository; run after scripts/test.sh)
-set -euo pipefail
-ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+source "$(dirname "${BASH_SOURCE[0]}")/tool_common.sh"
 DATA=${1:-$ROOT/../shared/data/abcd}
 THREADS=${2:-1}
-TOOL=$ROOT/build/examples/Distortion_optimization/distortion_optimizer
-[ -x "$TOOL" ] || { echo "build the tool first (bash scripts/test.sh)" >&2; exit 1; }
 [ -d "$DATA" ] || { echo "no data folder $DATA" >&2; exit 1; }
-OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
-
-field() { sed -n "s/^  \"$2\": \\(.*\\),\\?$/\\1/p" "$1" | sed 's/,$//' | head -1; }
 
 printf '%-22s %7s %9s %9s %8s %10s %10s %8s %12s\n' case cells "inv start" "inv end" rounds "untangle s" "optimize s" sweeps "final E"
 run() {
