@@ -21,8 +21,9 @@
 //    by Jacobi's diagonal or, for a smooth model's steps, the Laplacian's, cut short). The step
 //    is bounded and searched as the Laplacian's, and gives way to it when it cannot be taken.
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
-//  planes (Newton's: the step restricted to them) and are projected back onto their surface at
-//  every trial; the harmonic start keeps them where they are.
+//  planes (Newton's: the step restricted to them; the Laplacian's: the solve for the gradient's
+//  part in them) and are projected back onto their surface at every trial; the harmonic start
+//  keeps them where they are.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_H
@@ -127,8 +128,8 @@ struct Block_AMD_ordering
 // line search decides on the measure itself. With nothing fixed the model has the same
 // minimizers (the source's similarities, its rigid motions). With a boundary sliding on a surface
 // they differ, yet the model's steps still lead (the ball maps of blobby's 44K tetrahedra: K
-// 1.598 after 50 iterations against 1.762 after 100 with the Laplacian's; C 1.412 after 61 against
-// 1.432 after 100). With fixed vertices they do not (the Table 1 cube: the model's steps were cut
+// 1.5916 after 51 iterations against 1.6104 after 100 with the Laplacian's; C 1.4064 after 47
+// against 1.4130 after 89). With fixed vertices they do not (the Table 1 cube: the model's steps were cut
 // short and the run took twice as long), and on a surface's parametrization no map has K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
 template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
@@ -209,10 +210,8 @@ public:
       return true;
     }
     if(newton && !is_own_model) model_steps_.failed();
-    // The Laplacian's steps of a measure with kinks may find no decrease for the rest of a run
-    // (isometric dilatation C, 51K-tetrahedron Mesh_3 cube onto the ball, boundary sliding: none
-    // after the 7th of 40, each costing a third of an iteration): after failures, the next 1, 2,
-    // 4, ... are skipped (optimize 2.86 s -> 2.0 s, the same map).
+    // The Laplacian's steps of a measure with kinks may find no decrease for the rest of a run,
+    // each costing a third of an iteration: after failures, the next 1, 2, 4, ... are skipped.
     if(!newton_ && !laplacian_steps_.tries()) return false;
     const bool moved = step_along(false);
     if(!newton_) moved ? laplacian_steps_.succeeded() : laplacian_steps_.failed();
@@ -257,6 +256,14 @@ private:
       system_.refill([&](const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) {
         cell_terms(cells, count, factor, gradient);
       }, &g, nullptr);
+      // A sliding vertex's gradient along its normal is a force the surface holds: solved for, it
+      // would spread through the interior and the step would no longer descend (51K Mesh_3 cube
+      // onto the ball, C: no Laplacian step descended after the 7th iteration).
+      for(std::size_t v = 0; v < normal.size(); ++v)
+        if(p_.slides(v) && system_.column(v) >= 0) {
+          auto row = g.row(system_.column(v));
+          row -= row.dot(normal[v].transpose()) * normal[v].transpose();
+        }
       Eigen::DiagonalPreconditioner<double> preconditioner;
       preconditioner.compute(system_.matrix());
       x = previous_solution_;
