@@ -110,7 +110,7 @@ flattened (checked with exact predicates); the energy never increases.
     \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
                           step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with nothing constrained or sliding, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with nothing constrained, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}
@@ -308,7 +308,7 @@ are the points of the triangulation.
     \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
                           step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with nothing constrained or sliding, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with nothing constrained, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}

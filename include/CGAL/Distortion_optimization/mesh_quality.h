@@ -341,7 +341,7 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
   \cgalParamNBegin{schedule}
     \cgalParamDescription{what an iteration does (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes with a measure that has a `hessian()`; tetrahedral complexes with nothing constrained or sliding under `Conformal_dilatation`, `Condition_number` or `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes with a measure that has a `hessian()`), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and on tetrahedral complexes with the boundary sliding under `Conformal_dilatation`, `Condition_number` or `Isometric_dilatation` a smooth model's Newton steps, whose minimizers are not the measure's)}
   \cgalParamNEnd
 
   \cgalParamNBegin{global_solver}

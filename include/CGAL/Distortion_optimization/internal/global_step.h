@@ -127,9 +127,9 @@ struct Block_AMD_ordering
 // (Rabinovich et al. 2017): MIPS for K and the condition number, symmetric Dirichlet for C; the
 // line search decides on the measure itself. With nothing fixed the model has the same
 // minimizers (the source's similarities, its rigid motions). With a boundary sliding on a surface
-// they differ, yet the model's steps still lead (the ball maps of blobby's 44K tetrahedra: K
-// 1.5916 after 51 iterations against 1.6104 after 100 with the Laplacian's; C 1.4064 after 47
-// against 1.4130 after 89). With fixed vertices they do not (the Table 1 cube: the model's steps were cut
+// they differ, yet the model's steps, alternated with sweeps (minimize.h), still lead (the ball
+// maps of blobby's 44K tetrahedra: K 1.5917 after 35 iterations against 1.6104 after 100 with the
+// Laplacian's; C 1.4067 after 43 against 1.4130 after 89). With fixed vertices they do not (the Table 1 cube: the model's steps were cut
 // short and the run took twice as long), and on a surface's parametrization no map has K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
 template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
@@ -171,6 +171,8 @@ public:
   // smooth model's rather than the measure's.
   bool is_newton() const { return newton_; }
   bool takes_model_steps() const { return newton_ && !is_own_model; }
+  // Whether those are a model's whose minimizers are not the measure's (some vertex slides).
+  bool model_misses_minimizers() const { return takes_model_steps() && slides_; }
 
   // The harmonic start (see the file comment), with the cell weights w(c) (for the default
   // weights, the volume-weighted cotangent Laplacian). Skipped where the harmonic map is not

@@ -80,11 +80,16 @@ public:
     // 0.35 s, mannequin-devil 1.03 s against 1.50 s; the exponential stretch of a 69K cube, MIPS:
     // 0.78 s against 0.88 s, symmetric Dirichlet 0.42 s against 0.44 s); otherwise alternating, as the
     // reweighted Laplacian's steps need the sweeps (mannequin-devil: 1.36 s against 1.70 s alone).
-    // Also Newton's steps alone where they are a smooth model's (global_step.h), as the measure's
-    // local moves gain little near its kink (6K cube, nothing fixed, K: 0.16 s against 0.20 s).
+    // Also Newton's steps alone where they are a smooth model's with the measure's minimizers
+    // (global_step.h), as the measure's local moves gain little near its kink (6K cube, nothing
+    // fixed, K: 0.16 s against 0.20 s). With a sliding boundary the model's minimizers differ:
+    // its full steps then gain little on the measure, and the sweeps must go on (the ball map of
+    // blobby's 44K tetrahedra, K: 1.5917 in 4.35 s alternating against 6.94 s; its shapes under
+    // improve_mesh_quality(), boundary sliding: K 3.5901 in 0.91 s against 1.36 s).
     // A step that one cell's safe step holds back may gain almost nothing: a sweep then follows it
     // in the same iteration (minimize()), so that the run stops only when neither gains.
-    schedule_ = options.schedule.value_or(global_step_ && global_step_->is_newton() ? Schedule::GLOBAL : Schedule::ALTERNATING);
+    const bool newton_alone = global_step_ && global_step_->is_newton() && !global_step_->model_misses_minimizers();
+    schedule_ = options.schedule.value_or(newton_alone ? Schedule::GLOBAL : Schedule::ALTERNATING);
   }
 
   // After the targets were replaced from outside the steps (untangling restores a better map).
