@@ -57,7 +57,7 @@ enum class Schedule
 enum class Global_solver
 {
   REWEIGHTED_LAPLACIAN, ///< the source's Laplacian reweighted per cell, solved by a few conjugate gradient iterations
-  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`, and on a tetrahedral complex with no vertex fixed, sliding ones allowed, K, the condition number and C through a smooth model; the Laplacian otherwise); sliding vertices move in their tangent planes
+  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`, and on a tetrahedral complex with no vertex fixed, sliding ones allowed, K, the condition number and C through a smooth model, whose Hessian with sliding vertices is the metric of the measure's own gradient; the Laplacian otherwise); sliding vertices move in their tangent planes
 };
 
 /// \ingroup PkgDistortionOptimizationRef

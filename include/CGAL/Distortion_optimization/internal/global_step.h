@@ -20,6 +20,8 @@
 //    whose factorizations fill in too much, truncated Newton (conjugate gradients preconditioned
 //    by Jacobi's diagonal or, for a smooth model's steps, the Laplacian's, cut short). The step
 //    is bounded and searched as the Laplacian's, and gives way to it when it cannot be taken.
+//  Where the Newton steps are a smooth model's and some vertices slide, the right-hand side is
+//  the measure's gradient (the model's Hessian as a proxy metric, see Newton_model).
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
 //  planes (Newton's: the step restricted to them; the Laplacian's: the solve for the gradient's
 //  part in them) and are projected back onto their surface at every trial; the harmonic start
@@ -127,9 +129,13 @@ struct Block_AMD_ordering
 // (Rabinovich et al. 2017): MIPS for K and the condition number, symmetric Dirichlet for C; the
 // line search decides on the measure itself. With nothing fixed the model has the same
 // minimizers (the source's similarities, its rigid motions). With a boundary sliding on a surface
-// they differ, yet the model's steps, alternated with sweeps (minimize.h), still lead (the ball
-// maps of blobby's 44K tetrahedra: K 1.5917 after 35 iterations against 1.6104 after 100 with the
-// Laplacian's; C 1.4067 after 43 against 1.4130 after 89). With fixed vertices they do not (the Table 1 cube: the model's steps were cut
+// they differ: the model's Hessian is then only the metric of the measure's own gradient, a
+// proxy as SLIM's reweighted Laplacian is, so that each step descends on the measure, and the
+// steps alternate with sweeps (minimize.h). The ball map of blobby's 44K tetrahedra: K 1.5895
+// after 19 iterations (3.3 s), against 1.5917 after 35 (4.0 s) with the model's own steps and
+// 1.6104 after 100 with the Laplacian's; C 1.4026 after 52, against 1.4067 after 43 and 1.4130
+// after 89. The gyroid's 51K-tetrahedron cube, C: 1.37647 in 1.86 s, where the model's own steps
+// ended at 1.37651 in 2.73 s. With fixed vertices the model's steps do not lead (the Table 1 cube: they were cut
 // short and the run took twice as long), and on a surface's parametrization no map has K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
 template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
@@ -165,14 +171,16 @@ public:
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()),
       previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)),
       slides_(std::any_of(p_.is_sliding.begin(), p_.is_sliding.end(), [](unsigned char s) { return s != 0; })),
-      newton_(newton && measures_internal::Has_hessian<Model, n>::value && (is_own_model || every_vertex_moves())) {}
+      newton_(newton && measures_internal::Has_hessian<Model, n>::value && (is_own_model || every_vertex_moves())),
+      proxy_(newton_ && !is_own_model && slides_) {}
 
   // Whether the steps solve Newton's system (else the reweighted Laplacian's), and whether it is a
   // smooth model's rather than the measure's.
   bool is_newton() const { return newton_; }
   bool takes_model_steps() const { return newton_ && !is_own_model; }
-  // Whether those are a model's whose minimizers are not the measure's (some vertex slides).
-  bool model_misses_minimizers() const { return takes_model_steps() && slides_; }
+  // Whether those are a model's whose minimizers are not the measure's (some vertex slides): its
+  // Hessian is then the metric of the measure's gradient.
+  bool model_misses_minimizers() const { return proxy_; }
 
   // The harmonic start (see the file comment), with the cell weights w(c) (for the default
   // weights, the volume-weighted cotangent Laplacian). Skipped where the harmonic map is not
@@ -312,8 +320,9 @@ private:
     const double cap = !(last > 0) ? 1. : newton ? std::clamp(2 * last, 2., 8.) : 2 * last;
     double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
     // A model's slope is not the measure's: then any decrease is taken, within 8 trials (a
-    // model's step shorter than that is not worth the trials: the Laplacian's follows).
-    const bool model = newton && !is_own_model;
+    // model's step shorter than that is not worth the trials: the Laplacian's follows). A
+    // proxy's step has the measure's slope.
+    const bool model = newton && !is_own_model && !proxy_;
     const bool moved = line_search(direction, t, model ? 0. : slope, newton ? 1. : 0., model ? 8 : 30);
     if(moved) last = t;
     if(newton) blocked_ = !(moved && t >= 1);
@@ -331,6 +340,15 @@ private:
       std::atomic<bool> finite(true);
       system_.refill_hessian([&](const std::uint32_t* cells, std::size_t count, Cell_hessian<n>* H,
                                  std::array<Vec, n + 1>* gradient) {
+        // A proxy's metric for the measure's own gradient (see step_along).
+        static thread_local std::vector<double> own_value;
+        static thread_local std::vector<std::array<Vec, n + 1>> own_gradient;
+        if(proxy_) {
+          own_value.resize(count);
+          own_gradient.resize(count);
+          cell_distortions<n>(state_.measure(), p_.map, count, [&](std::size_t i) { return cells[i]; }, own_value.data(),
+                              own_gradient.data());
+        }
         for(std::size_t i = 0; i < count; ++i) {
           const std::uint32_t c = cells[i];
           if(!cell_hessian<n>(model(), p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
@@ -344,6 +362,10 @@ private:
             H[i].setZero();
             for(int a = 0; a <= n; ++a)
               for(int b = 0; b <= n; ++b) H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
+          }
+          if(proxy_) {
+            gradient[i] = own_gradient[i];
+            for(const Vec& v : gradient[i]) finite = finite && v.allFinite();
           }
           if(!normal.empty()) restrict_to_tangent_planes(p_.map.cells[c], normal, H[i], gradient[i]);
         }
@@ -519,7 +541,7 @@ private:
   Eigen::MatrixXd previous_solution_;
   double last_t_ = 0, last_newton_t_ = 0;   // the last accepted step of each direction
   bool slides_;   // whether some vertex slides on a surface
-  bool newton_, blocked_ = false;
+  bool newton_, proxy_, blocked_ = false;   // proxy_: the model's Hessian, the measure's gradient
   struct No_model {};
   std::conditional_t<is_own_model, No_model, Model> model_;
   std::unique_ptr<Factorization> factorization_;

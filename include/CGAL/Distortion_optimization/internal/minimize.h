@@ -82,10 +82,10 @@ public:
     // reweighted Laplacian's steps need the sweeps (mannequin-devil: 1.36 s against 1.70 s alone).
     // Also Newton's steps alone where they are a smooth model's with the measure's minimizers
     // (global_step.h), as the measure's local moves gain little near its kink (6K cube, nothing
-    // fixed, K: 0.16 s against 0.20 s). With a sliding boundary the model's minimizers differ:
-    // its full steps then gain little on the measure, and the sweeps must go on (the ball map of
-    // blobby's 44K tetrahedra, K: 1.5917 in 4.35 s alternating against 6.94 s; its shapes under
-    // improve_mesh_quality(), boundary sliding: K 3.5901 in 0.91 s against 1.36 s).
+    // fixed, K: 0.16 s against 0.20 s). With a sliding boundary the model's minimizers differ,
+    // and its Hessian is only a proxy metric: the sweeps must go on (the ball map of the gyroid's
+    // 51K-tetrahedron cube, C: 1.3760 after 20 iterations alternating; the steps alone stall at
+    // 1.4159).
     // A step that one cell's safe step holds back may gain almost nothing: a sweep then follows it
     // in the same iteration (minimize()), so that the run stops only when neither gains.
     const bool newton_alone = global_step_ && global_step_->is_newton() && !global_step_->model_misses_minimizers();
