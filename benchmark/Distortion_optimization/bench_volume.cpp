@@ -8,8 +8,8 @@
 //     ball, isometric dilatation C, boundary sliding, carrying a gyroid of two periods (as the
 //     example gyroid_texture).
 // Each pipeline optimizes with either global step: the reweighted Laplacian's, and projected
-// Newton's (the default; C has no Hessian: with the boundary sliding its rows take the Newton
-// steps of a smooth model, symmetric Dirichlet, and the Laplacian's where those fail).
+// Newton's (the default; C has no Hessian: with the boundary sliding its rows solve symmetric
+// Dirichlet's Hessian against C's own gradient, and take the Laplacian's steps where that fails).
 // Stages: mesh (mesh_interior, sequential, timed once per pipeline), start (the ball map), untangle
 // (of the cells the ball map flattens), optimize, carry (the gyroid under the optimized map, its
 // embedding made once beforehand). This machine's speed drifts: each configuration runs `repeats`

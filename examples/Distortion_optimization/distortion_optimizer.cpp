@@ -191,7 +191,7 @@ auto common_parameters(const Command_line& c, const Weights& weights)
 {
   namespace P = DO::parameters;
   const auto solver = c.solver == "bfgs" ? DO::Local_solver::BFGS : DO::Local_solver::GRADIENT_DESCENT;
-  // Without --schedule, the library's default (global steps alone where they are Newton's).
+  // Without --schedule, the library's default (minimize_distortion()'s schedule parameter).
   const std::optional<DO::Schedule> schedule =
     c.schedule.empty() ? std::nullopt
     : std::optional<DO::Schedule>(c.schedule == "local" ? DO::Schedule::LOCAL

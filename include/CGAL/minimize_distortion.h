@@ -110,7 +110,7 @@ flattened (checked with exact predicates); the energy never increases.
     \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
                           step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with nothing constrained, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with no vertex constrained or sliding, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}
@@ -308,7 +308,7 @@ are the points of the triangulation.
     \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
                           step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with nothing constrained, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with no vertex constrained or sliding, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}
@@ -365,7 +365,8 @@ are the points of the triangulation.
     \cgalParamExtra{Newton steps need a measure with a `hessian()`, otherwise the step is the Laplacian's; with no
                     vertex constrained or sliding, `Conformal_dilatation` and `Condition_number` take the Newton steps of
                     `MIPS`, `Isometric_dilatation` those of `Symmetric_dirichlet` (the same minimizers, without the
-                    kink there), and the line search decides on the measure itself. The Newton
+                    kink there); with sliding vertices and none constrained, the model's Hessian is the metric of
+                    the measure's own gradient. The line search decides on the measure itself. The Newton
                     system of a complex (3 unknowns per free vertex) fills in too much to factor: it is solved
                     inexactly, by at most 60 Jacobi-preconditioned conjugate gradient iterations (truncated Newton).
                     Sliding vertices take the step restricted to their tangent planes.}

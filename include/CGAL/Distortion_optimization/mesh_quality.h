@@ -341,7 +341,7 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
   \cgalParamNBegin{schedule}
     \cgalParamDescription{what an iteration does (`Distortion_optimization::parameters::schedule()`)}
     \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (triangle meshes with a measure that has a `hessian()`), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and on tetrahedral complexes with the boundary sliding under `Conformal_dilatation`, `Condition_number` or `Isometric_dilatation` a smooth model's Newton steps, whose minimizers are not the measure's)}
+    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; tetrahedral complexes with no vertex constrained or sliding under `Conformal_dilatation`, `Condition_number` or `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and on tetrahedral complexes with the boundary sliding under `Conformal_dilatation`, `Condition_number` or `Isometric_dilatation` a smooth model's Newton steps, whose minimizers are not the measure's)}
   \cgalParamNEnd
 
   \cgalParamNBegin{global_solver}
@@ -350,7 +350,7 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
     \cgalParamType{`Distortion_optimization::Global_solver`}
     \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
     \cgalParamExtra{Newton steps apply to measures with a `hessian()`; the default `Conformal_dilatation` takes the
-                    Laplacian's steps, except on a complex with no vertex constrained or sliding (then MIPS's Newton steps).}
+                    Laplacian's steps, except on a complex with no vertex constrained (then MIPS's Newton steps; with vertices sliding, MIPS's Hessian as the metric of K's gradient).}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}

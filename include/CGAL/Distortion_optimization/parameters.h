@@ -47,8 +47,8 @@ enum class Vertex_order
 enum class Schedule
 {
   LOCAL,       ///< the paper's Algorithms 1-2: one sweep of local vertex moves
-  GLOBAL,      ///< one preconditioned step that moves all free vertices at once (the default with Newton's steps)
-  ALTERNATING  ///< a local sweep, then a global step (the default with the reweighted Laplacian's steps)
+  GLOBAL,      ///< one preconditioned step that moves all free vertices at once (the default with Newton's steps, except a smooth model's with sliding vertices)
+  ALTERNATING  ///< a local sweep, then a global step (the default with the reweighted Laplacian's steps, and with a smooth model's Newton steps when vertices slide)
 };
 
 /// \ingroup PkgDistortionOptimizationRef
@@ -116,7 +116,7 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
 
 /// A `Schedule` (or a `std::optional` of one: empty for the default); default `Schedule::GLOBAL` with projected
 /// Newton steps (a local sweep then follows a step that gains too little or is cut short), `Schedule::ALTERNATING`
-/// otherwise.
+/// otherwise, and with a smooth model's Newton steps when vertices slide.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(schedule_t, schedule)
 /// `bool`: start from the harmonic map of the fixed vertices when it is valid and better (or from
 /// the best safe point towards it); default `true`, except with `Schedule::LOCAL` (the paper's

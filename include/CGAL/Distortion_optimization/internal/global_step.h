@@ -353,10 +353,14 @@ private:
           const std::uint32_t c = cells[i];
           if(!cell_hessian<n>(model(), p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
             // An inverted or flat cell (where a measure that is not normalized is finite): the
-            // kernel's gradient, and the Laplacian's stiffness in each coordinate.
-            double value;
-            cell_distortions<n>(model(), p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
-            for(const Vec& v : gradient[i]) finite = finite && v.allFinite();
+            // kernel's gradient (a proxy's is the measure's, below), and the Laplacian's stiffness
+            // in each coordinate.
+            if(!proxy_) {
+              double value;
+              cell_distortions<n>(model(), p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
+              for(const Vec& v : gradient[i])
+                if(!v.allFinite()) finite = false;
+            }
             const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
             const Matrix<n + 1> stiffness = G.transpose() * G;
             H[i].setZero();
@@ -365,7 +369,8 @@ private:
           }
           if(proxy_) {
             gradient[i] = own_gradient[i];
-            for(const Vec& v : gradient[i]) finite = finite && v.allFinite();
+            for(const Vec& v : gradient[i])
+              if(!v.allFinite()) finite = false;
           }
           if(!normal.empty()) restrict_to_tangent_planes(p_.map.cells[c], normal, H[i], gradient[i]);
         }
