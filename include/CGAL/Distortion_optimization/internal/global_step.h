@@ -135,8 +135,9 @@ struct Block_AMD_ordering
 // after 19 iterations (3.3 s), against 1.5917 after 35 (4.0 s) with the model's own steps and
 // 1.6104 after 100 with the Laplacian's; C 1.4026 after 52, against 1.4067 after 43 and 1.4130
 // after 89. The gyroid's 51K-tetrahedron cube, C: 1.37647 in 1.86 s, where the model's own steps
-// ended at 1.37651 in 2.73 s. With fixed vertices the model's steps do not lead (the Table 1 cube: they were cut
-// short and the run took twice as long), and on a surface's parametrization no map has K = 1.
+// ended at 1.37651 in 2.73 s. With fixed vertices the model's steps do not lead (the Table 1
+// cube: they were cut short and the run took twice as long), and on a surface's parametrization
+// no map has K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
 template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
 template <> struct Newton_model<Condition_number> { using type = MIPS; };
