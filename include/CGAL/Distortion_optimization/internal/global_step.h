@@ -21,7 +21,8 @@
 //    by Jacobi's diagonal or, for a smooth model's steps, the Laplacian's, cut short). The step
 //    is bounded and searched as the Laplacian's, and gives way to it when it cannot be taken.
 //  Where the Newton steps are a smooth model's and some vertices slide, the right-hand side is
-//  the measure's gradient (the model's Hessian as a proxy metric, see Newton_model).
+//  the measure's gradient (the model's Hessian as a proxy metric, assembled every third step,
+//  see Newton_model).
 //  Sliding vertices (named parameter sliding_boundary) take the step's part in their tangent
 //  planes (Newton's: the step restricted to them; the Laplacian's: the solve for the gradient's
 //  part in them) and are projected back onto their surface at every trial; the harmonic start
@@ -135,9 +136,14 @@ struct Block_AMD_ordering
 // after 19 iterations (3.3 s), against 1.5917 after 35 (4.0 s) with the model's own steps and
 // 1.6104 after 100 with the Laplacian's; C 1.4026 after 52, against 1.4067 after 43 and 1.4130
 // after 89. The gyroid's 51K-tetrahedron cube, C: 1.37647 in 1.86 s, where the model's own steps
-// ended at 1.37651 in 2.73 s. With fixed vertices the model's steps do not lead (the Table 1
-// cube: they were cut short and the run took twice as long), and on a surface's parametrization
-// no map has K = 1.
+// ended at 1.37651 in 2.73 s. A proxy's steps are held short by the measure's kinks (the
+// accepted length falls to a few hundredths), not by its metric: the Hessian, two thirds of a
+// step's cost, is assembled every third step only, and each step starts from twice the last
+// accepted length, as the Laplacian's (one thread, interleaved runs: the gyroid's cube, C 1.37593
+// in 2.2-2.3 s against 1.37595 in 2.9-3.4 s; blobby's ball map, K 1.5898 in 2.4-2.6 s against
+// 1.5895 in 3.2-3.4 s, C 1.4022 in 5.4-5.5 s against 1.4026 in 6.6-7.7 s). With fixed vertices
+// the model's steps do not lead (the Table 1 cube: they were cut short and the run took twice as
+// long), and on a surface's parametrization no map has K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
 template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
 template <> struct Newton_model<Condition_number> { using type = MIPS; };
@@ -220,7 +226,10 @@ public:
       model_steps_.succeeded();
       return true;
     }
-    if(newton && !is_own_model) model_steps_.failed();
+    if(newton && !is_own_model) {
+      model_steps_.failed();
+      metric_steps_ = 0;
+    }
     // The Laplacian's steps of a measure with kinks may find no decrease for the rest of a run,
     // each costing a third of an iteration: after failures, the next 1, 2, 4, ... are skipped.
     if(!newton_ && !laplacian_steps_.tries()) return false;
@@ -267,14 +276,7 @@ private:
       system_.refill([&](const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) {
         cell_terms(cells, count, factor, gradient);
       }, &g, nullptr);
-      // A sliding vertex's gradient along its normal is a force the surface holds: solved for, it
-      // would spread through the interior and the step would no longer descend (51K Mesh_3 cube
-      // onto the ball, C: no Laplacian step descended after the 7th iteration).
-      for(std::size_t v = 0; v < normal.size(); ++v)
-        if(p_.slides(v) && system_.column(v) >= 0) {
-          auto row = g.row(system_.column(v));
-          row -= row.dot(normal[v].transpose()) * normal[v].transpose();
-        }
+      project_on_tangent_planes(normal, g);
       Eigen::DiagonalPreconditioner<double> preconditioner;
       preconditioner.compute(system_.matrix());
       x = previous_solution_;
@@ -314,17 +316,18 @@ private:
     // P is positive definite (semi-definite with nothing fixed, g then in its range), so only a
     // failed solve gets here.
     if(!(slope < 0)) return false;
-    // The Laplacian's step has no natural length: twice the last accepted one. Newton's is 1, but
-    // far from the minimum barrier-like terms (s^-2) make it short: 2, up to 8 after long steps,
-    // then 1 if that fails.
+    // The Laplacian's step has no natural length, nor has a proxy's (the model's Newton length is
+    // not the measure's): twice the last accepted one. Newton's is 1, but far from the minimum
+    // barrier-like terms (s^-2) make it short: 2, up to 8 after long steps, then 1 if that fails.
     double& last = newton ? last_newton_t_ : last_t_;
-    const double cap = !(last > 0) ? 1. : newton ? std::clamp(2 * last, 2., 8.) : 2 * last;
+    const bool natural = newton && !proxy_;
+    const double cap = !(last > 0) ? 1. : natural ? std::clamp(2 * last, 2., 8.) : 2 * last;
     double t = std::min(cap, 0.9 * max_step(direction, cap / 0.9));
     // A model's slope is not the measure's: then any decrease is taken, within 8 trials (a
     // model's step shorter than that is not worth the trials: the Laplacian's follows). A
     // proxy's step has the measure's slope.
     const bool model = newton && !is_own_model && !proxy_;
-    const bool moved = line_search(direction, t, model ? 0. : slope, newton ? 1. : 0., model ? 8 : 30);
+    const bool moved = line_search(direction, t, model ? 0. : slope, natural ? 1. : 0., model ? 8 : 30);
     if(moved) last = t;
     if(newton) blocked_ = !(moved && t >= 1);
     return moved;
@@ -339,16 +342,32 @@ private:
       return false;
     } else {
       std::atomic<bool> finite(true);
+      // A proxy's right-hand side: the measure's own gradient.
+      const auto measure_gradients = [&](const std::uint32_t* cells, std::size_t count, std::array<Vec, n + 1>* gradient) {
+        static thread_local std::vector<double> value;
+        value.resize(count);
+        cell_distortions<n>(state_.measure(), p_.map, count, [&](std::size_t i) { return cells[i]; }, value.data(), gradient);
+        for(std::size_t i = 0; i < count; ++i)
+          for(const Vec& v : gradient[i])
+            if(!v.allFinite()) finite = false;
+      };
+      // A proxy's metric changes slowly from step to step, and the measure's kinks, not the
+      // metric, hold its steps short: its assembly (two thirds of a step) is renewed every
+      // proxy_metric_steps steps, and after a failed one (see the figures at Newton_model).
+      if(proxy_ && metric_steps_ > 0 && metric_steps_ < proxy_metric_steps) {
+        ++metric_steps_;
+        system_.refill_gradient(measure_gradients, g);
+        if(!finite) return false;
+        project_on_tangent_planes(normal, g);
+        return solve_newton_system(g, x);
+      }
+      metric_steps_ = 1;
       system_.refill_hessian([&](const std::uint32_t* cells, std::size_t count, Cell_hessian<n>* H,
                                  std::array<Vec, n + 1>* gradient) {
-        // A proxy's metric for the measure's own gradient (see step_along).
-        static thread_local std::vector<double> own_value;
         static thread_local std::vector<std::array<Vec, n + 1>> own_gradient;
         if(proxy_) {
-          own_value.resize(count);
           own_gradient.resize(count);
-          cell_distortions<n>(state_.measure(), p_.map, count, [&](std::size_t i) { return cells[i]; }, own_value.data(),
-                              own_gradient.data());
+          measure_gradients(cells, count, own_gradient.data());
         }
         for(std::size_t i = 0; i < count; ++i) {
           const std::uint32_t c = cells[i];
@@ -368,48 +387,50 @@ private:
             for(int a = 0; a <= n; ++a)
               for(int b = 0; b <= n; ++b) H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
           }
-          if(proxy_) {
-            gradient[i] = own_gradient[i];
-            for(const Vec& v : gradient[i])
-              if(!v.allFinite()) finite = false;
-          }
+          if(proxy_) gradient[i] = own_gradient[i];
           if(!normal.empty()) restrict_to_tangent_planes(p_.map.cells[c], normal, H[i], gradient[i]);
         }
       }, &g);
       if(!finite) return false;
-      const Eigen::SparseMatrix<double>& H = system_.hessian();
-      Eigen::MatrixXd b(H.rows(), 1), solution = Eigen::MatrixXd::Zero(H.rows(), 1);
-      for(int j = 0; j < g.rows(); ++j) b.col(0).template segment<n>(n * j) = -g.row(j).transpose();
-      if constexpr(n == 3) {
-        // A tetrahedral mesh's Newton system fills in far too much for a factorization (about 16 s
-        // per step at 5.10^4 tetrahedra): truncated Newton (Nash, "Newton-type minimization via
-        // the Lanczos method", 1984), preconditioned conjugate gradients from 0, cut at 60
-        // iterations or a residual of 1e-2; every iterate from 0 descends. Jacobi's preconditioner,
-        // except that a model's steps (nothing fixed) take the Laplacian's for the rest of the run
-        // once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in each cell's
-        // scaling (69K-tetrahedron cube mapped by x|x|, K through MIPS: 16.3 s and 96 iterations
-        // against 4.7 s and 18). Where cells' stiffnesses differ by orders of magnitude (after
-        // untangling), the Laplacian's is the worse of the two: the measures' own steps keep Jacobi's.
-        // So do a model's with sliding vertices, whose tangent planes the coordinatewise Laplacian
-        // does not see (51K Mesh_3 cube onto the ball, C: 24 iterations against 32).
-        if(!laplacian_preconditioner_) {
-          Eigen::DiagonalPreconditioner<double> jacobi;
-          jacobi.compute(H);
-          if(!system_.solve(H, jacobi, b, solution, 60, 1e-2) && takes_model_steps() && !slides_) {
-            laplacian_preconditioner_ = std::make_unique<typename Laplacian_system<n>::Coordinatewise_laplacian>(system_);
-            if(!laplacian_preconditioner_->ok()) laplacian_preconditioner_.reset();
-          }
-        } else {
-          system_.solve(H, *laplacian_preconditioner_, b, solution, 60, 1e-2);
+      return solve_newton_system(g, x);
+    }
+  }
+
+  // x = -H^-1 g with the last assembled H (see newton_direction); false if the solve fails.
+  bool solve_newton_system(const Eigen::MatrixXd& g, Eigen::MatrixXd& x)
+  {
+    const Eigen::SparseMatrix<double>& H = system_.hessian();
+    Eigen::MatrixXd b(H.rows(), 1), solution = Eigen::MatrixXd::Zero(H.rows(), 1);
+    for(int j = 0; j < g.rows(); ++j) b.col(0).template segment<n>(n * j) = -g.row(j).transpose();
+    if constexpr(n == 3) {
+      // A tetrahedral mesh's Newton system fills in far too much for a factorization (about 16 s
+      // per step at 5.10^4 tetrahedra): truncated Newton (Nash, "Newton-type minimization via
+      // the Lanczos method", 1984), preconditioned conjugate gradients from 0, cut at 60
+      // iterations or a residual of 1e-2; every iterate from 0 descends. Jacobi's preconditioner,
+      // except that a model's steps (nothing fixed) take the Laplacian's for the rest of the run
+      // once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in each cell's
+      // scaling (69K-tetrahedron cube mapped by x|x|, K through MIPS: 16.3 s and 96 iterations
+      // against 4.7 s and 18). Where cells' stiffnesses differ by orders of magnitude (after
+      // untangling), the Laplacian's is the worse of the two: the measures' own steps keep Jacobi's.
+      // So do a model's with sliding vertices, whose tangent planes the coordinatewise Laplacian
+      // does not see (51K Mesh_3 cube onto the ball, C: 24 iterations against 32).
+      if(!laplacian_preconditioner_) {
+        Eigen::DiagonalPreconditioner<double> jacobi;
+        jacobi.compute(H);
+        if(!system_.solve(H, jacobi, b, solution, 60, 1e-2) && takes_model_steps() && !slides_) {
+          laplacian_preconditioner_ = std::make_unique<typename Laplacian_system<n>::Coordinatewise_laplacian>(system_);
+          if(!laplacian_preconditioner_->ok()) laplacian_preconditioner_.reset();
         }
       } else {
-        solve_by_factorization(H, b, solution);
+        system_.solve(H, *laplacian_preconditioner_, b, solution, 60, 1e-2);
       }
-      if(!solution.allFinite()) return false;
-      x.resize(g.rows(), n);
-      for(int j = 0; j < g.rows(); ++j) x.row(j) = solution.col(0).template segment<n>(n * j).transpose();
-      return true;
+    } else {
+      solve_by_factorization(H, b, solution);
     }
+    if(!solution.allFinite()) return false;
+    x.resize(g.rows(), n);
+    for(int j = 0; j < g.rows(); ++j) x.row(j) = solution.col(0).template segment<n>(n * j).transpose();
+    return true;
   }
 
   // The direction of a Newton step on a triangle mesh, x = H^-1 b (NaN where the factorization
@@ -440,6 +461,18 @@ private:
       }
       solution = factorization_->solve(b);
     }
+  }
+
+  // Each sliding vertex's row of g in its tangent plane. Its part along the normal is a force the
+  // surface holds: solved for, it would spread through the interior and the step would no longer
+  // descend (51K Mesh_3 cube onto the ball, C: no Laplacian step descended after the 7th iteration).
+  void project_on_tangent_planes(const std::vector<Vec>& normal, Eigen::MatrixXd& g) const
+  {
+    for(std::size_t v = 0; v < normal.size(); ++v)
+      if(p_.slides(v) && system_.column(v) >= 0) {
+        auto row = g.row(system_.column(v));
+        row -= row.dot(normal[v].transpose()) * normal[v].transpose();
+      }
   }
 
   // A cell's Hessian and gradient for Newton's step with its sliding vertices in their tangent
@@ -548,6 +581,9 @@ private:
   double last_t_ = 0, last_newton_t_ = 0;   // the last accepted step of each direction
   bool slides_;   // whether some vertex slides on a surface
   bool newton_, proxy_, blocked_ = false;   // proxy_: the model's Hessian, the measure's gradient
+  // The steps a proxy's assembled Hessian served (0: none to serve), and how many it serves.
+  int metric_steps_ = 0;
+  static constexpr int proxy_metric_steps = 3;
   struct No_model {};
   std::conditional_t<is_own_model, No_model, Model> model_;
   std::unique_ptr<Factorization> factorization_;

@@ -80,7 +80,7 @@ public:
   {
     constexpr bool unit_factors = std::is_same<CellTerms, std::nullptr_t>::value;
     std::vector<double> factor(std::min(block, moving_cells_.size()), 1.);
-    assemble<1>(P_, [&](std::size_t begin, const std::uint32_t* cells, std::size_t count,
+    assemble<1>(&P_, [&](std::size_t begin, const std::uint32_t* cells, std::size_t count,
                         Eigen::Matrix<double, n + 1, n + 1>* stiffness, std::array<Vec, n + 1>* gradient) {
       double* f = &factor[begin];
       if constexpr(!unit_factors) cell_terms(cells, count, f, gradient);
@@ -99,13 +99,22 @@ public:
   void refill_hessian(const CellHessians& cell_hessians, Eigen::MatrixXd* g)
   {
     if(H_.rows() != n * size_) build_block_pattern();
-    assemble<n>(H_, [&](std::size_t, const std::uint32_t* cells, std::size_t count,
+    assemble<n>(&H_, [&](std::size_t, const std::uint32_t* cells, std::size_t count,
                         Eigen::Matrix<double, n * (n + 1), n * (n + 1)>* hessian, std::array<Vec, n + 1>* gradient) {
       cell_hessians(cells, count, hessian, gradient);
     }, g, nullptr);
   }
 
   const Eigen::SparseMatrix<double>& hessian() const { return H_; }
+
+  // Only the weighted gradient into g (zero on entry), as refill gathers it:
+  // `cell_gradients(cells, count, gradient)` gives each cell's unweighted vertex gradients.
+  template <class CellGradients>
+  void refill_gradient(const CellGradients& cell_gradients, Eigen::MatrixXd& g)
+  {
+    assemble<1>(nullptr, [&](std::size_t, const std::uint32_t* cells, std::size_t count, Eigen::Matrix<double, n + 1, n + 1>*,
+                             std::array<Vec, n + 1>* gradient) { cell_gradients(cells, count, gradient); }, &g, nullptr);
+  }
 
   // A preconditioner for H (hessian()) that does not depend on the map: an incomplete Cholesky
   // factor of the source's Laplacian (P with the unit factors), applied to each of a vertex's n
@@ -255,27 +264,28 @@ private:
     return std::find(reached.begin(), reached.end(), 0) == reached.end();
   }
 
-  // Fills A (P for k = 1, H for k = n: k unknowns per free vertex) with the weighted cell matrices
-  // w(c) M_c that `cell_matrices(begin, cells, count, M, gradient)` computes for the moving cells
-  // cells[0..count) (at `begin` in their block), and g, rhs as refill() says. Block by block of
-  // cells, the cells' parts are computed in parallel, then gathered in parallel by column: column
-  // j of A and rows j of g and rhs take their contributions in cell order, so that every sum has
-  // the sequential order whatever the number of threads.
+  // Fills A (P for k = 1, H for k = n: k unknowns per free vertex; none if null) with the
+  // weighted cell matrices w(c) M_c that `cell_matrices(begin, cells, count, M, gradient)` computes
+  // for the moving cells cells[0..count) (at `begin` in their block; M null without A), and g, rhs
+  // as refill() says. Block by block of cells, the cells' parts are computed in parallel, then
+  // gathered in parallel by column: column j of A and rows j of g and rhs take their contributions
+  // in cell order, so that every sum has the sequential order whatever the number of threads.
   template <int k, class CellMatrices>
-  void assemble(Eigen::SparseMatrix<double>& A, const CellMatrices& cell_matrices, Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
+  void assemble(Eigen::SparseMatrix<double>* A, const CellMatrices& cell_matrices, Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     using Cell_matrix = Eigen::Matrix<double, k * (n + 1), k * (n + 1)>;
-    std::fill(A.valuePtr(), A.valuePtr() + A.nonZeros(), 0.);
-    std::vector<Cell_matrix> local(std::min(block, moving_cells_.size()));
-    std::vector<std::array<Vec, n + 1>> gradient(g ? local.size() : 0);
+    if(A) std::fill(A->valuePtr(), A->valuePtr() + A->nonZeros(), 0.);
+    const std::size_t capacity = std::min(block, moving_cells_.size());
+    std::vector<Cell_matrix> local(A ? capacity : 0);
+    std::vector<std::array<Vec, n + 1>> gradient(g ? capacity : 0);
     const int* outer = P_.outerIndexPtr();
     for(std::size_t first = 0; first < moving_cells_.size(); first += block) {
       const std::size_t count = std::min(block, moving_cells_.size() - first);
       workers_.for_each_block(count, 256, [&](std::size_t begin, std::size_t size) {
-        cell_matrices(begin, &moving_cells_[first + begin], size, &local[begin], g ? &gradient[begin] : nullptr);
+        cell_matrices(begin, &moving_cells_[first + begin], size, A ? &local[begin] : nullptr, g ? &gradient[begin] : nullptr);
         for(std::size_t i = begin; i < begin + size; ++i) {
           const double w = p_.cell_weight[moving_cells_[first + i]];
-          local[i] *= w;
+          if(A) local[i] *= w;
           if(g)
             for(Vec& x : gradient[i]) x = w * x;
         }
@@ -288,7 +298,7 @@ private:
           if(g && gradient[i][a].allFinite())
             g->row(j) += gradient[i][a].transpose();
           const int* slot = &slots_[(first + i) * (n + 1) * (n + 1)];
-          for(int b = 0; b <= n; ++b) {
+          for(int b = 0; b <= n && A; ++b) {
             const int s = slot[b * (n + 1) + a];   // entry (b, a): row of cell vertex b in column j
             if(s < 0) continue;
             // Block (b, a) of the cell's matrix: in column j * k + q of A, the entries of P's
@@ -296,7 +306,7 @@ private:
             const int column_size = outer[j + 1] - outer[j];
             for(int q = 0; q < k; ++q)
               for(int r = 0; r < k; ++r)
-                A.valuePtr()[k * k * outer[j] + q * k * column_size + (s - outer[j]) * k + r] += local[i](b * k + r, a * k + q);
+                A->valuePtr()[k * k * outer[j] + q * k * column_size + (s - outer[j]) * k + r] += local[i](b * k + r, a * k + q);
           }
           if(rhs)
             for(int b = 0; b <= n; ++b)
