@@ -136,12 +136,13 @@ struct Block_AMD_ordering
 // after 19 iterations (3.3 s), against 1.5917 after 35 (4.0 s) with the model's own steps and
 // 1.6104 after 100 with the Laplacian's; C 1.4026 after 52, against 1.4067 after 43 and 1.4130
 // after 89. The gyroid's 51K-tetrahedron cube, C: 1.37647 in 1.86 s, where the model's own steps
-// ended at 1.37651 in 2.73 s. A proxy's steps are held short by the measure's kinks (the
-// accepted length falls to a few hundredths), not by its metric: the Hessian, two thirds of a
-// step's cost, is assembled every third step only, and each step starts from twice the last
-// accepted length, as the Laplacian's (one thread, interleaved runs: the gyroid's cube, C 1.37593
-// in 2.2-2.3 s against 1.37595 in 2.9-3.4 s; blobby's ball map, K 1.5898 in 2.4-2.6 s against
-// 1.5895 in 3.2-3.4 s, C 1.4022 in 5.4-5.5 s against 1.4026 in 6.6-7.7 s). With fixed vertices
+// ended at 1.37651 in 2.73 s (a Hessian each step). A proxy's steps are held short by the
+// measure's kinks (the accepted length falls to a few hundredths), not by its metric: the
+// Hessian, two thirds of a step's cost, is assembled every third step only, and each step starts
+// from twice the last accepted length, as the Laplacian's. Whole runs, one thread, interleaved:
+// the gyroid's cube ends at C 1.37593 in 2.2-2.3 s against 1.37595 in 2.9-3.4 s; blobby's ball
+// map at K 1.5898 in 2.4-2.6 s against 1.5895 in 3.2-3.4 s, C 1.4022 in 5.4-5.5 s against
+// 1.4026 in 6.6-7.7 s. With fixed vertices
 // the model's steps do not lead (the Table 1 cube: they were cut short and the run took twice as
 // long), and on a surface's parametrization no map has K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
@@ -335,7 +336,8 @@ private:
 
   // The projected Newton direction x = -H^-1 g (rows: free vertices) and the gradient g, in the
   // tangent planes of the sliding vertices (`normal`); false where some moving cell has no finite
-  // gradient or the factorization fails.
+  // gradient or the factorization fails. A proxy's H may be up to two steps old, restricted to
+  // the tangent planes of then: still positive definite, so x descends (step_along projects it).
   bool newton_direction(const std::vector<Vec>& normal, Eigen::MatrixXd& g, Eigen::MatrixXd& x)
   {
     if constexpr(!measures_internal::Has_hessian<Model, n>::value) {
