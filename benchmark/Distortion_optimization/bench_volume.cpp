@@ -14,7 +14,8 @@
 // (of the cells the ball map flattens), optimize, carry (the gyroid under the optimized map, its
 // embedding made once beforehand). This machine's speed drifts: each configuration runs `repeats`
 // times, interleaved, and the median times are reported (the runs are deterministic, so all else
-// is the same in each).
+// is the same in each). Last, time to energy: the energy each configuration's last run had
+// reached at a few times after the call (untangling included), from a visitor at each iteration.
 //
 //   build/benchmark/Distortion_optimization/bench_volume [repeats, default 3 [closed_surface.off]]
 
@@ -32,7 +33,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace DO = CGAL::Distortion_optimization;
@@ -65,7 +68,23 @@ struct Row
   double distance = 0;
   DO::Distortion_statistics gyroid_c, gyroid_k;
   std::string error;   // what a failed run threw (the other configurations still run)
+  std::vector<std::pair<double, double>> trace;   // the last run's (seconds since the call, energy) per iteration
 };
+
+const double checkpoints[] = {0.25, 0.5, 1, 2};
+
+void print_time_to_energy(const char* pipeline, const char* step, int threads, const Row& row)
+{
+  if(!row.error.empty()) return;
+  std::printf("%-12s %-9s %7d", pipeline, step, threads);
+  for(double t : checkpoints) {
+    double reached = std::numeric_limits<double>::quiet_NaN();   // no iteration done yet
+    for(const auto& [seconds, energy] : row.trace)
+      if(seconds <= t) reached = energy;
+    std::printf(" %9.5f", reached);
+  }
+  std::printf("\n");
+}
 
 void print_header()
 {
@@ -103,13 +122,21 @@ void run(const Volume& volume, const Measure& measure, DO::Global_solver solver,
   row.start.push_back(seconds_since(start));
   if(!row.error.empty()) return;
   try {
+    row.trace.clear();
+    const auto call = std::chrono::steady_clock::now();
+    const auto visitor = [&](std::size_t, double energy) {
+      row.trace.emplace_back(seconds_since(call), energy);
+      return true;
+    };
     row.r = CGAL::minimize_distortion(volume, Target_map(map), measure,
       DOP::sliding_boundary(DO::Sphere_surface(), DOP::untangle_first(row.flat > 0, DOP::number_of_threads(threads, DOP::global_solver(solver))))
-        .number_of_iterations(200));
+        .number_of_iterations(200).visitor(visitor));
   } catch(const DO::Invalid_input& e) {
     row.error = e.what();
     return;
   }
+  // The untangling's rounds are reported first: keep the optimization's iterations.
+  row.trace.erase(row.trace.begin(), row.trace.end() - std::min(row.trace.size(), row.r.iterations));
   row.untangle.push_back(row.r.untangle_seconds);
   row.optimize.push_back(row.r.seconds - row.r.untangle_seconds);
   row.distance = largest_distance_to_unit_sphere(boundary_vertices(volume), map);
@@ -197,6 +224,13 @@ int main(int argc, char** argv)
                       solver_names[s], thread_counts[t], t ? "s" : "", row.gyroid_c.mean_volume, row.gyroid_c.max,
                       row.gyroid_k.mean_volume, row.gyroid_k.max);
       }
+    std::printf("\n%-12s %-9s %7s", "time to E", "step", "threads");
+    for(double t : checkpoints) std::printf(" %8.2fs", t);
+    std::printf("\n");
+    for(int s = 0; s < 2; ++s)
+      for(int t = 0; t < 2; ++t) print_time_to_energy("surface", solver_names[s], thread_counts[t], surface_rows[s][t]);
+    for(int s = 0; s < 2; ++s)
+      for(int t = 0; t < 2; ++t) print_time_to_energy("gyroid cube", solver_names[s], thread_counts[t], cube_rows[s][t]);
   } catch(const DO::Invalid_input& e) {
     std::fprintf(stderr, "Error: %s\n", e.what());
     return 1;
