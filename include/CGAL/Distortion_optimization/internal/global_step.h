@@ -142,9 +142,9 @@ struct Block_AMD_ordering
 // from twice the last accepted length, as the Laplacian's. Whole runs, one thread, interleaved:
 // the gyroid's cube ends at C 1.37593 in 2.2-2.3 s against 1.37595 in 2.9-3.4 s; blobby's ball
 // map at K 1.5898 in 2.4-2.6 s against 1.5895 in 3.2-3.4 s, C 1.4022 in 5.4-5.5 s against
-// 1.4026 in 6.6-7.7 s. With fixed vertices
-// the model's steps do not lead (the Table 1 cube: they were cut short and the run took twice as
-// long), and on a surface's parametrization no map has K = 1.
+// 1.4026 in 6.6-7.7 s. With fixed vertices the model's steps do not lead (the Table 1 cube: they
+// were cut short and the run took twice as long), and on a surface's parametrization no map has
+// K = 1.
 template <class Measure> struct Newton_model { using type = Measure; };
 template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
 template <> struct Newton_model<Condition_number> { using type = MIPS; };
