@@ -206,6 +206,7 @@ public:
       if(!system.harmonic_targets(state_.targets(), direction)) return false;
     }
     for(std::size_t v = 0; v < direction.size(); ++v) direction[v] -= state_.targets()[v];
+    if(std::all_of(direction.begin(), direction.end(), [](const Vec& d) { return d == Vec::Zero(); })) return false;   // already harmonic
     // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
     // energy drops, three times at most: a smaller fraction is no longer a start, and where the
     // start is already better (the radial map of the 54K Mesh_3 cube under K) the 30 trials of a
