@@ -41,26 +41,33 @@ constexpr std::uint32_t no_tetrahedron = std::numeric_limits<std::uint32_t>::max
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                                       std::vector<std::uint32_t>& across)
 {
+  // 32-bit indices throughout: half the memory traffic of size_t, and a facet's two other
+  // vertices or an edge's other vertex and its cell pack into one 64-bit sort key.
   using Index = std::uint32_t;
   const std::size_t count = tetrahedra.size();
   if(count >= std::numeric_limits<Index>::max() / 10) throw Invalid_input("too many tetrahedra");
-  std::vector<std::array<std::size_t, 4>> sorted(tetrahedra);
+  std::vector<std::array<Index, 4>> sorted(count);
   std::size_t vertices = 0;
-  for(auto& k : sorted) {
-    std::sort(k.begin(), k.end());
-    vertices = std::max(vertices, k[3] + 1);
+  for(std::size_t t = 0; t < count; ++t) {
+    for(int i = 0; i < 4; ++i) {
+      if(tetrahedra[t][i] >= std::numeric_limits<Index>::max()) throw Invalid_input("too many vertices");
+      sorted[t][i] = static_cast<Index>(tetrahedra[t][i]);
+    }
+    std::sort(sorted[t].begin(), sorted[t].end());
+    vertices = std::max<std::size_t>(vertices, sorted[t][3] + 1);
   }
   // The star of each vertex: the tetrahedra containing it, in increasing order.
   std::vector<Index> first(vertices + 1, 0), star(4 * count);
   for(const auto& k : sorted)
-    for(std::size_t v : k) ++first[v + 1];
+    for(Index v : k) ++first[v + 1];
   for(std::size_t v = 0; v < vertices; ++v) first[v + 1] += first[v];
   {
     std::vector<Index> next(first.begin(), first.end() - 1);
     for(std::size_t t = 0; t < count; ++t)
-      for(std::size_t v : sorted[t]) star[next[v]++] = static_cast<Index>(t);
+      for(Index v : sorted[t]) star[next[v]++] = static_cast<Index>(t);
   }
-  // Union-find over the incidences 4t + i (vertex sorted[t][i]) and 4 count + 6t + e (edge e).
+  // Union-find over the incidences 10t + i (vertex sorted[t][i]) and 10t + 4 + e (edge e): a
+  // tetrahedron's ten together, for the cache.
   std::vector<Index> parent(10 * count);
   std::iota(parent.begin(), parent.end(), Index(0));
   const auto root = [&](Index i) {
@@ -75,7 +82,7 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
   // The incidence of the edge (u, w) of t: 0..5 for the positions (0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3).
   const auto edge_incidence = [&](std::size_t t, std::size_t u, std::size_t w) {
     const int i = position(t, std::min(u, w)), j = position(t, std::max(u, w));
-    return static_cast<Index>(4 * count + 6 * t + (i == 0 ? j - 1 : i + j));
+    return static_cast<Index>(10 * t + 4 + (i == 0 ? j - 1 : i + j));
   };
   const auto name = [](std::size_t i) { return std::to_string(i); };
   across.assign(4 * count, no_tetrahedron);
@@ -86,8 +93,9 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
     return j;
   };
 
-  // Tetrahedra listed twice, facets shared by three or more, and the pairings across facets.
-  struct Facet { std::size_t v, w; Index t; };
+  // Tetrahedra listed twice, facets shared by three or more, and the pairings across facets. A
+  // facet (u, v, w), u < v < w, is keyed by v w at u.
+  struct Facet { std::uint64_t vw; Index t; };
   std::vector<Facet> facets;
   std::vector<Index> own;   // the star's tetrahedra whose smallest vertex is u
   for(std::size_t u = 0; u < vertices; ++u) {
@@ -98,10 +106,10 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
       if(s[0] == u) own.push_back(star[k]);
       for(int i = 0; i < 4; ++i)   // the facets opposite s[i] whose smallest vertex is u
         if(s[i] != u && (s[0] == u || (i == 0 && s[1] == u))) {
-          std::array<std::size_t, 2> vw;
-          for(int j = 0, m = 0; j < 4; ++j)
-            if(j != i && s[j] != u) vw[m++] = s[j];
-          facets.push_back({vw[0], vw[1], star[k]});
+          std::uint64_t vw = 0;
+          for(int j = 0; j < 4; ++j)
+            if(j != i && s[j] != u) vw = vw << 32 | s[j];
+          facets.push_back({vw, star[k]});
         }
     }
     // (Sorts break ties by tetrahedron, as the stars list them: the stable order, without
@@ -110,23 +118,24 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
     for(std::size_t i = 1; i < own.size(); ++i)
       if(sorted[own[i - 1]] == sorted[own[i]])
         throw Invalid_input("tetrahedra " + name(own[i - 1]) + " and " + name(own[i]) + " have the same vertices");
-    std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) { return std::tie(a.v, a.w, a.t) < std::tie(b.v, b.w, b.t); });
+    std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) { return std::tie(a.vw, a.t) < std::tie(b.vw, b.t); });
     for(std::size_t i = 0; i < facets.size(); ++i) {
       const Facet& f = facets[i];
+      const std::size_t v = f.vw >> 32, w = f.vw & 0xffffffffu;
       std::size_t j = i + 1;
-      while(j < facets.size() && facets[j].v == f.v && facets[j].w == f.w) ++j;
+      while(j < facets.size() && facets[j].vw == f.vw) ++j;
       if(j - i > 2)
         throw Invalid_input("tetrahedra " + name(f.t) + ", " + name(facets[i + 1].t) + " and " + name(facets[i + 2].t) + " share the facet (" +
-                            name(u) + ", " + name(f.v) + ", " + name(f.w) + "): the complex is not manifold there");
+                            name(u) + ", " + name(v) + ", " + name(w) + "): the complex is not manifold there");
       if(j - i == 2) {
         const Index a = f.t, b = facets[i + 1].t;
-        const Index facet_of_a = 4 * a + opposite(a, u, f.v, f.w), facet_of_b = 4 * b + opposite(b, u, f.v, f.w);
+        const Index facet_of_a = 4 * a + opposite(a, u, v, w), facet_of_b = 4 * b + opposite(b, u, v, w);
         across[facet_of_a] = facet_of_b;
         across[facet_of_b] = facet_of_a;
-        const std::array<std::size_t, 3> triangle = {u, f.v, f.w};
+        const std::array<std::size_t, 3> triangle = {u, v, w};
         for(int m = 0; m < 3; ++m) {
           const std::size_t x = triangle[m], y = triangle[(m + 1) % 3];
-          parent[root(static_cast<Index>(4 * a + position(a, x)))] = root(static_cast<Index>(4 * b + position(b, x)));
+          parent[root(static_cast<Index>(10 * a + position(a, x)))] = root(static_cast<Index>(10 * b + position(b, x)));
           parent[root(edge_incidence(a, x, y))] = root(edge_incidence(b, x, y));
         }
       }
@@ -135,28 +144,29 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
   }
   // Around each edge (u, w), u < w, and each vertex: one root, else the lowest cell and the first
   // one it does not reach.
-  struct Around { std::size_t w; Index t; };
-  std::vector<Around> around;
+  std::vector<std::uint64_t> around;   // (w, t) for each edge (u, w) of each tetrahedron t
   for(std::size_t u = 0; u < vertices; ++u) {
     around.clear();
     for(Index k = first[u]; k < first[u + 1]; ++k)
-      for(std::size_t w : sorted[star[k]])
-        if(w > u) around.push_back({w, star[k]});
-    std::sort(around.begin(), around.end(), [](const Around& a, const Around& b) { return std::tie(a.w, a.t) < std::tie(b.w, b.t); });
+      for(Index w : sorted[star[k]])
+        if(w > u) around.push_back(std::uint64_t(w) << 32 | star[k]);
+    std::sort(around.begin(), around.end());
     for(std::size_t i = 0; i < around.size();) {
-      const std::size_t w = around[i].w, lowest = around[i].t;
+      const std::size_t w = around[i] >> 32, lowest = around[i] & 0xffffffffu;
       const Index r = root(edge_incidence(lowest, u, w));
-      for(; i < around.size() && around[i].w == w; ++i)
-        if(root(edge_incidence(around[i].t, u, w)) != r)
-          throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(around[i].t) + " meet only at the edge (" + name(u) + ", " +
+      for(; i < around.size() && around[i] >> 32 == w; ++i) {
+        const Index t = around[i] & 0xffffffffu;
+        if(root(edge_incidence(t, u, w)) != r)
+          throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(t) + " meet only at the edge (" + name(u) + ", " +
                               name(w) + "): the complex is not manifold there");
+      }
     }
   }
   for(std::size_t u = 0; u < vertices; ++u) {
     if(first[u] == first[u + 1]) continue;
-    const Index lowest = star[first[u]], r = root(static_cast<Index>(4 * lowest + position(lowest, u)));
+    const Index lowest = star[first[u]], r = root(static_cast<Index>(10 * lowest + position(lowest, u)));
     for(Index k = first[u]; k < first[u + 1]; ++k)
-      if(root(static_cast<Index>(4 * star[k] + position(star[k], u))) != r)
+      if(root(static_cast<Index>(10 * star[k] + position(star[k], u))) != r)
         throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(star[k]) + " meet only at vertex " + name(u) +
                             ": the complex is not manifold there");
   }
