@@ -81,7 +81,7 @@ public:
   void refill(const CellTerms& cell_terms, Eigen::MatrixXd* g, Eigen::MatrixXd* rhs)
   {
     constexpr bool unit_factors = std::is_same<CellTerms, std::nullptr_t>::value;
-    std::vector<double> factor(std::min(block, moving_cells_.size()), 1.);
+    std::vector<double> factor(std::min(block<1>, moving_cells_.size()), 1.);
     assemble<1>(&P_, [&](std::size_t begin, const std::uint32_t* cells, std::size_t count,
                         Eigen::Matrix<double, n + 1, n + 1>* stiffness, std::array<Vec, n + 1>* gradient) {
       double* f = &factor[begin];
@@ -265,6 +265,17 @@ public:
   }
 
 private:
+  // assemble's blocks of moving cells, small enough for their cell matrices to stay in the L2
+  // cache (in 3D, 1 MB of Laplacian parts, or 1.2 MB of 12 x 12 Hessians: with P's 8192 cells a
+  // block, the Hessians' round trip through memory was a fifth of a 54K-cell MIPS run), and for
+  // each block the incidences of its cells' free vertices: the columns of P they fall in and, per
+  // column, (position of the cell in the block) * (n + 1) + (the vertex's place in the cell)
+  template <int k> static constexpr std::size_t block = k == 1 ? 8192 : 1024;
+  struct Block_incidences
+  {
+    std::vector<std::uint32_t> columns, begin, entries;
+  };
+
   // Whether every unknown vertex is joined through cells to a vertex that is not one: where a
   // part is not, P is singular, and a factorization may see a rounding error for its zero pivot.
   bool every_unknown_reaches_a_known_vertex() const
@@ -301,6 +312,8 @@ private:
     using Cell_matrix = Eigen::Matrix<double, k * (n + 1), k * (n + 1)>;
     CGAL_precondition(A != nullptr || rhs == nullptr);   // rhs takes the cell matrices
     if(A) std::fill(A->valuePtr(), A->valuePtr() + A->nonZeros(), 0.);
+    constexpr std::size_t block = Laplacian_system::block<k>;
+    const std::vector<Block_incidences>& blocks = k == 1 ? blocks_ : hessian_blocks_;
     const std::size_t capacity = std::min(block, moving_cells_.size());
     std::vector<Cell_matrix> local(A ? capacity : 0);
     std::vector<std::array<Vec, n + 1>> gradient(g ? capacity : 0);
@@ -316,7 +329,7 @@ private:
             for(Vec& x : gradient[i]) x = w * x;
         }
       });
-      const Block_incidences& incidences = blocks_[first / block];
+      const Block_incidences& incidences = blocks[first / block];
       workers_.for_each(incidences.columns.size(), 64, [&](std::size_t t) {
         const std::uint32_t j = incidences.columns[t];
         for(std::uint32_t e = incidences.begin[t]; e < incidences.begin[t + 1]; ++e) {
@@ -361,6 +374,7 @@ private:
     });
     H_.outerIndexPtr()[n * size_] = n * n * P_.nonZeros();
     std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
+    build_blocks(block<n>, hessian_blocks_);
   }
 
   // The sparsity pattern of the free-free block, and for each cell and pair of its free vertices
@@ -419,13 +433,18 @@ private:
           if(column_[cell[a]] >= 0) slot[a * (n + 1)] = position[column_[cell[a]]];
       }
     });
-    // Each block's incidences of free vertices, by column of P and, within a column, in cell order:
-    // what refill gathers. A counting sort by column, stable, so each column keeps the cell order.
-    blocks_.assign((moving_cells_.size() + block - 1) / block, {});
-    workers_.for_each(blocks_.size(), 1, [&](std::size_t b) {
+    build_blocks(block<1>, blocks_);
+  }
+
+  // Each block's incidences of free vertices, by column of P and, within a column, in cell order:
+  // what assemble gathers. A counting sort by column, stable, so each column keeps the cell order.
+  void build_blocks(std::size_t block, std::vector<Block_incidences>& blocks) const
+  {
+    blocks.assign((moving_cells_.size() + block - 1) / block, {});
+    workers_.for_each(blocks.size(), 1, [&](std::size_t b) {
       static thread_local std::vector<std::uint32_t> count;   // per column, zero between blocks
       if(count.size() < static_cast<std::size_t>(size_)) count.resize(size_, 0);
-      Block_incidences& incidences = blocks_[b];
+      Block_incidences& incidences = blocks[b];
       const std::size_t first = b * block, last = std::min(moving_cells_.size(), first + block);
       for(std::size_t i = first; i < last; ++i)
         for(auto v : p_.map.cells[moving_cells_[i]])
@@ -453,15 +472,7 @@ private:
   std::vector<std::uint32_t> column_vertex_;   // column_'s inverse
   int size_ = 0;
   std::vector<std::uint32_t> moving_cells_;
-  // assemble's blocks of moving cells, small enough for their Laplacian parts to stay in the L2 cache, and
-  // for each block the incidences of its cells' free vertices: the columns of P they fall in and,
-  // per column, (position of the cell in the block) * (n + 1) + (the vertex's place in the cell)
-  static constexpr std::size_t block = 8192;
-  struct Block_incidences
-  {
-    std::vector<std::uint32_t> columns, begin, entries;
-  };
-  std::vector<Block_incidences> blocks_;
+  std::vector<Block_incidences> blocks_, hessian_blocks_;
   Eigen::SparseMatrix<double> P_, H_;
   std::vector<int> slots_;
 };
