@@ -667,6 +667,37 @@ TEST(Readers, EndlessStreamIsReadNoFurtherThanTheLineBound)
   EXPECT_EQ(reader_error(triangle_obj + comment + "x\n", "obj"), "bad.obj: line 5 longer than 1048576 bytes");
 }
 
+TEST(Readers, BoundedLinesAcrossTheBufferGrowth)
+{
+  // The line buffer starts at 4 KiB and doubles: lines about each size it takes, the bound on
+  // either side of its last growth, a NUL and a carriage return kept, the last line without a
+  // line break, and empty lines.
+  const std::size_t bound = 20000;
+  std::string text;
+  std::vector<std::string> lines;
+  for(std::size_t length : {0, 1, 4094, 4095, 4096, 4097, 8191, 8192, 8193, 16385, 19999, 20000, 0, 3}) {
+    std::string line(length, 'a');
+    for(std::size_t i = 0; i < length; ++i) line[i] = static_cast<char>('a' + i % 26);
+    if(length == 3) line = "x\0\r"s;
+    lines.push_back(line);
+    text += line + (length == 3 ? "" : "\n");
+  }
+  std::istringstream in(text);
+  std::string buffer;
+  std::size_t length = 0;
+  for(const std::string& expected : lines) {
+    ASSERT_EQ(IO::internal::read_bounded_line(in, buffer, length, bound), IO::internal::Line_status::line) << expected.size();
+    EXPECT_EQ(std::string(buffer.data(), length), expected) << expected.size();
+  }
+  EXPECT_EQ(IO::internal::read_bounded_line(in, buffer, length, bound), IO::internal::Line_status::end_of_stream);
+  EXPECT_TRUE(in.fail());
+  for(std::size_t length_over : {bound + 1, 2 * bound}) {
+    std::istringstream over(std::string(length_over, 'b') + "\nnext\n");
+    EXPECT_EQ(IO::internal::read_bounded_line(over, buffer, length, bound), IO::internal::Line_status::too_long);
+    EXPECT_LE(buffer.size(), bound + 1);
+  }
+}
+
 TEST(Readers, HeaderCountsReserveNoMoreThanTheInputCanHold)
 {
   // 23 bytes announcing 16.7M vertices: the reader must find the file truncated without

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include <limits>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -66,10 +68,11 @@ inline const Medit_section* medit_section(const std::string& keyword)
 
 // Whether a token is one of the keywords above or a header keyword: seen where a value is
 // expected, it means the section before it is shorter than announced.
-inline bool is_medit_keyword(const std::string& token)
+inline bool is_medit_keyword(std::string_view token)
 {
-  if(token.empty() || !std::isalpha(static_cast<unsigned char>(token[0]))) return false; // numbers, fast
-  const std::string k = to_lower(token);
+  // Numbers, fast (an ASCII test: std::isalpha consults the locale).
+  if(token.empty() || static_cast<unsigned char>((token[0] | 0x20) - 'a') >= 26) return false;
+  const std::string k = to_lower(std::string(token));
   return medit_section(k) != nullptr || k == "meshversionformatted" || k == "dimension" || k == "end" ||
          k == "angleofcornerbound";
 }
@@ -157,19 +160,20 @@ private:
     return n;
   }
 
-  // The next value of entry `entry` of a section announcing `n` entries.
-  std::string value(const std::string& section, long long n, long long entry)
+  // The next value of entry `entry` of a section announcing `n` entries: a view into the line,
+  // valid until the next call.
+  std::string_view value(const std::string& section, long long n, long long entry)
   {
-    std::string v;
+    std::string_view v;
     if(!tokens_.next(v) || is_medit_keyword(v))
       tokens_.fail("truncated " + section + " section: " + std::to_string(n) + " entries announced, " +
                    std::to_string(entry) + " found");
     return v;
   }
 
-  void check_number(const std::string& section, const std::string& v) const
+  void check_number(const std::string& section, std::string_view v) const
   {
-    if(!Token_reader::is_number(v)) tokens_.fail("'" + v + "' in " + section + " is not a number");
+    if(!Token_reader::is_number(v)) tokens_.fail("'" + std::string(v) + "' in " + section + " is not a number");
   }
 
   // Room for `n` entries of a section, no more than the rest of the stream can hold.
@@ -199,19 +203,19 @@ private:
     for(long long c = 0; c < n; ++c) {
       std::array<std::size_t, 4> tet;
       for(int i = 0; i < 4; ++i) {
-        const std::string s = value("Tetrahedra", n, c);
+        const std::string_view s = value("Tetrahedra", n, c);
         const long long index = tokens_.integer(s);
         if(index < 1 || index > nv)
-          tokens_.fail("tetrahedron " + std::to_string(c) + " has vertex index " + s + " out of range (1 to " +
+          tokens_.fail("tetrahedron " + std::to_string(c) + " has vertex index " + std::string(s) + " out of range (1 to " +
                        std::to_string(nv) + ")");
         tet[i] = static_cast<std::size_t>(index - 1);
         for(int j = 0; j < i; ++j)
-          if(tet[j] == tet[i]) tokens_.fail("tetrahedron " + std::to_string(c) + " repeats vertex " + s);
+          if(tet[j] == tet[i]) tokens_.fail("tetrahedron " + std::to_string(c) + " repeats vertex " + std::string(s));
       }
-      const std::string s = value("Tetrahedra", n, c);
+      const std::string_view s = value("Tetrahedra", n, c);
       const long long label = tokens_.integer(s);
       if(label < std::numeric_limits<int>::min() || label > std::numeric_limits<int>::max())
-        tokens_.fail("tetrahedron " + std::to_string(c) + " has reference " + s + " out of range");
+        tokens_.fail("tetrahedron " + std::to_string(c) + " has reference " + std::string(s) + " out of range");
       soup_.cells.push_back(tet);
       soup_.labels.push_back(static_cast<int>(label));
     }
@@ -293,17 +297,29 @@ inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& so
         if(t[j] == t[i]) throw Invalid_input(path + ": tetrahedron " + std::to_string(c) + " repeats vertex " + std::to_string(t[i]));
     }
   }
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << soup.points.size() << '\n';
-    for(const auto& p : soup.points) out << p[0] << ' ' << p[1] << ' ' << p[2] << " 0\n";
-    out << "Tetrahedra\n" << soup.cells.size() << '\n';
-    for(std::size_t c = 0; c < soup.cells.size(); ++c) {
-      const auto& t = soup.cells[c];
-      out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
-          << (soup.labels.empty() ? 1 : soup.labels[c]) << '\n';
-    }
-    out << "End\n";
-  });
+  // Formatted into memory with std::to_chars (the shortest decimals that read back the same
+  // doubles), then written at once: through the stream's locale, each number took a virtual call.
+  std::string text;
+  text.reserve(80 * soup.points.size() + 40 * soup.cells.size() + 64);
+  char number[32];
+  const auto put = [&](auto x, char after) {
+    text.append(number, std::to_chars(number, number + sizeof number, x).ptr);
+    text += after;
+  };
+  text += "MeshVersionFormatted 1\nDimension 3\nVertices\n";
+  put(soup.points.size(), '\n');
+  for(const auto& p : soup.points) {
+    for(double x : p) put(x, ' ');
+    text += "0\n";
+  }
+  text += "Tetrahedra\n";
+  put(soup.cells.size(), '\n');
+  for(std::size_t c = 0; c < soup.cells.size(); ++c) {
+    for(std::size_t v : soup.cells[c]) put(v + 1, ' ');
+    put(soup.labels.empty() ? 1 : soup.labels[c], '\n');
+  }
+  text += "End\n";
+  write_file_atomically(path, [&](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
 } // namespace IO

@@ -18,9 +18,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <istream>
-#include <streambuf>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace CGAL {
@@ -35,31 +36,37 @@ constexpr std::size_t max_line_bytes = std::size_t(1) << 20;
 
 enum class Line_status { line, end_of_stream, too_long };
 
-// Reads the next line of `in` into `line`, without its '\n', keeping at most `max_bytes` bytes:
-// `too_long` as soon as the line has more (the rest of it is left unread). `end_of_stream` (and
-// failbit, as std::getline) when nothing is left. Any reader of a file the user gives should read
-// its lines through this or Line_reader.
-inline Line_status read_bounded_line(std::istream& in, std::string& line, std::size_t max_bytes = max_line_bytes)
+// Reads the next line of `in` into `buffer` (grown as needed, never beyond `max_bytes` + 1 bytes,
+// so that memory follows the longest line read), without its '\n', and its length into
+// `length`: `too_long` as soon as the line has more than `max_bytes` bytes (the rest of it is left
+// unread). `end_of_stream` (and failbit, as std::getline) when nothing is left. Any reader of a
+// file the user gives should read its lines through this or Line_reader. istream::getline copies
+// straight out of the stream's buffer (a character at a time through the streambuf was a quarter
+// of reading a mesh).
+inline Line_status read_bounded_line(std::istream& in, std::string& buffer, std::size_t& length, std::size_t max_bytes = max_line_bytes)
 {
-  line.clear();
-  const std::istream::sentry ok(in, true);
-  if(!ok) return Line_status::end_of_stream;
-  std::streambuf& buffer = *in.rdbuf();
-  try {
-    for(bool extracted = false;; extracted = true) {
-      const std::streambuf::int_type c = buffer.sbumpc();
-      if(std::streambuf::traits_type::eq_int_type(c, std::streambuf::traits_type::eof())) {
-        in.setstate(extracted ? std::ios::eofbit : std::ios::eofbit | std::ios::failbit);
-        return extracted ? Line_status::line : Line_status::end_of_stream;
-      }
-      if(c == '\n') return Line_status::line;
-      if(line.size() == max_bytes) return Line_status::too_long;
-      line.push_back(std::streambuf::traits_type::to_char_type(c));
+  length = 0;
+  if(buffer.size() < 2) buffer.resize(std::min<std::size_t>(4096, max_bytes + 1));
+  for(;;) {
+    // Room for the rest of the buffer, the terminating NUL getline writes included.
+    in.getline(&buffer[length], static_cast<std::streamsize>(std::min(buffer.size(), max_bytes + 1) - length));
+    const std::size_t count = static_cast<std::size_t>(in.gcount());
+    if(in.bad()) return Line_status::end_of_stream;
+    if(in.eof()) { // the last line, without a line break, or nothing
+      length += count;
+      return length == 0 ? Line_status::end_of_stream : Line_status::line;
     }
-  } catch(...) { // as istream does for a throwing buffer
-    in.setstate(std::ios::badbit);
+    if(!in.fail()) { // the line break is counted, not stored
+      length += count - 1;
+      return Line_status::line;
+    }
+    // The buffer is full and no line break came yet.
+    if(count == 0) return Line_status::end_of_stream; // a stream that had failed already
+    length += count;
+    if(length >= max_bytes) return Line_status::too_long;
+    in.clear(in.rdstate() & ~std::ios::failbit);
+    buffer.resize(std::min(2 * buffer.size(), max_bytes + 1));
   }
-  return Line_status::end_of_stream;
 }
 
 // `text` with control bytes (C0, DEL, C1) and bytes that are not UTF-8 written as \xNN, so that
@@ -99,18 +106,19 @@ inline std::string printable(const std::string& text)
 // NUL or other byte after the number makes it not one. std::from_chars reads the decimal forms
 // several times faster (and to the same double: both round correctly); strtod takes what it
 // does not (a leading '+', hexadecimal).
-inline bool parse_number(const std::string& token, double& x)
+inline bool parse_number(std::string_view token, double& x)
 {
-  const char* begin = token.c_str();
-  const std::from_chars_result fast = std::from_chars(begin, begin + token.size(), x);
-  if(fast.ec == std::errc() && fast.ptr == begin + token.size()) return true;
+  const std::from_chars_result fast = std::from_chars(token.data(), token.data() + token.size(), x);
+  if(fast.ec == std::errc() && fast.ptr == token.data() + token.size()) return true;
+  const std::string copy(token);   // strtod needs the terminating NUL
+  const char* begin = copy.c_str();
   char* end = nullptr;
   errno = 0;
   x = std::strtod(begin, &end);
-  return end != begin && end == begin + token.size();
+  return end != begin && end == begin + copy.size();
 }
 
-inline bool is_number(const std::string& token)
+inline bool is_number(std::string_view token)
 {
   double x;
   return parse_number(token, x);
@@ -149,17 +157,27 @@ public:
   // Next non-empty line's tokens; false at the end of the stream.
   bool next(std::vector<std::string>& tokens)
   {
+    if(!next(views_)) return false;
+    tokens.resize(views_.size());   // into the strings' memory the lines before left them
+    for(std::size_t i = 0; i < views_.size(); ++i) tokens[i].assign(views_[i]);
+    return true;
+  }
+
+  // The same, as views into the line, valid until the next call.
+  bool next(std::vector<std::string_view>& tokens)
+  {
     for(;;) {
-      const Line_status status = read_bounded_line(in_, line_);
+      std::size_t length = 0;
+      const Line_status status = read_bounded_line(in_, line_, length);
       if(status == Line_status::end_of_stream) break;
       ++line_number_;
       if(status == Line_status::too_long)
         throw Invalid_input(printable(name_) + ": line " + std::to_string(line_number_) + " longer than " +
                             std::to_string(max_line_bytes) + " bytes");
-      if(line_number_ == 1 && line_.compare(0, 3, "\xEF\xBB\xBF") == 0) line_.erase(0, 3);
-      const std::size_t hash = line_.find('#');
-      if(hash != std::string::npos) line_.erase(hash);
-      split(tokens);
+      const char* line = line_.data();
+      if(line_number_ == 1 && length >= 3 && std::memcmp(line, "\xEF\xBB\xBF", 3) == 0) line += 3, length -= 3;
+      if(const void* hash = std::memchr(line, '#', length)) length = static_cast<std::size_t>(static_cast<const char*>(hash) - line);
+      split(line, length, tokens);
       if(!tokens.empty()) return true;
     }
     if(in_.bad()) fail("read error");
@@ -171,23 +189,29 @@ public:
     throw Invalid_input(printable(name_ + ":" + std::to_string(line_number_) + ": " + what));
   }
 
-  double coordinate(const std::string& token) const
+  double coordinate(std::string_view token) const
   {
     double x;
-    if(!parse_number(token, x)) fail("'" + token + "' is not a number");
+    if(!parse_number(token, x)) fail("'" + std::string(token) + "' is not a number");
     // strtod sets ERANGE for subnormals too (which the writers produce): only a result that is not
     // finite is refused.
-    if(!std::isfinite(x)) fail("coordinate '" + token + "' is not a finite number");
+    if(!std::isfinite(x)) fail("coordinate '" + std::string(token) + "' is not a finite number");
     return x;
   }
 
-  long long integer(const std::string& token) const
+  long long integer(std::string_view token) const
   {
-    const char* begin = token.c_str();
+    // from_chars first: strtoll, which consults the locale, was over a quarter of reading a mesh.
+    // strtoll takes what from_chars does not (a leading '+') and tells an overflow.
+    long long i;
+    const std::from_chars_result fast = std::from_chars(token.data(), token.data() + token.size(), i);
+    if(fast.ec == std::errc() && fast.ptr == token.data() + token.size()) return i;
+    const std::string copy(token);   // strtoll needs the terminating NUL
+    const char* begin = copy.c_str();
     char* end = nullptr;
     errno = 0;
-    const long long i = std::strtoll(begin, &end, 10);
-    if(end == begin || end != begin + token.size() || errno == ERANGE) fail("'" + token + "' is not an integer");
+    i = std::strtoll(begin, &end, 10);
+    if(end == begin || end != begin + copy.size() || errno == ERANGE) fail("'" + copy + "' is not an integer");
     return i;
   }
 
@@ -215,28 +239,24 @@ private:
   // The whitespace of the "C" locale, as istream's >> splits.
   static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
 
-  // Into the strings `tokens` already has, whose memory the lines before left them: no allocation
-  // per token once the lines are alike.
-  void split(std::vector<std::string>& tokens) const
+  static void split(const char* line, std::size_t length, std::vector<std::string_view>& tokens)
   {
-    std::size_t count = 0;
-    for(std::size_t i = 0; i < line_.size();) {
-      if(is_space(line_[i])) {
+    tokens.clear();
+    for(std::size_t i = 0; i < length;) {
+      if(is_space(line[i])) {
         ++i;
         continue;
       }
       const std::size_t begin = i;
-      while(i < line_.size() && !is_space(line_[i])) ++i;
-      if(count < tokens.size()) tokens[count].assign(line_, begin, i - begin);
-      else tokens.emplace_back(line_, begin, i - begin);
-      ++count;
+      while(i < length && !is_space(line[i])) ++i;
+      tokens.emplace_back(line + begin, i - begin);
     }
-    tokens.resize(count);
   }
 
   std::istream& in_;
   std::string name_;
-  std::string line_;
+  std::string line_;   // the line being read, its first `length` bytes
+  std::vector<std::string_view> views_;
   std::size_t line_number_ = 0;
   long long end_ = -1;
 };
@@ -248,8 +268,8 @@ class Token_reader
 public:
   Token_reader(std::istream& in, const std::string& name) : lines_(in, name) {}
 
-  // Next token; false at the end of the stream.
-  bool next(std::string& token)
+  // Next token, a view valid until a later call reads a new line; false at the end of the stream.
+  bool next(std::string_view& token)
   {
     while(position_ == tokens_.size()) {
       if(!lines_.next(tokens_)) {
@@ -263,6 +283,14 @@ public:
     return true;
   }
 
+  bool next(std::string& token)
+  {
+    std::string_view view;
+    if(!next(view)) return false;
+    token.assign(view);
+    return true;
+  }
+
   // An upper bound on the bytes left after the last token read, or -1 if the stream cannot tell.
   long long remaining_bytes() const
   {
@@ -273,17 +301,17 @@ public:
   }
 
   [[noreturn]] void fail(const std::string& what) const { lines_.fail(what); }
-  double coordinate(const std::string& token) const { return lines_.coordinate(token); }
-  long long integer(const std::string& token) const { return lines_.integer(token); }
+  double coordinate(std::string_view token) const { return lines_.coordinate(token); }
+  long long integer(std::string_view token) const { return lines_.integer(token); }
 
   // Whether `token` is a whole number, integer or real (infinities and NaN included).
-  static bool is_number(const std::string& token) { return internal::is_number(token); }
+  static bool is_number(std::string_view token) { return internal::is_number(token); }
 
   std::size_t line_number() const { return lines_.line_number(); }
 
 private:
   Line_reader lines_;
-  std::vector<std::string> tokens_;
+  std::vector<std::string_view> tokens_;
   std::size_t position_ = 0;
 };
 
