@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -30,13 +29,13 @@ namespace internal {
 // vertex, the tetrahedra must be connected through facets containing it; the message names the cells.
 //
 // Everything is found vertex by vertex in the vertices' stars (flat arrays, no tree of keys: at 1M
-// tetrahedra a map-based check took seconds): a facet or a tetrahedron is met at its smallest
-// vertex, where the tetrahedra sharing it are paired; each pairing joins, in a union-find over the
-// (tetrahedron, vertex) and (tetrahedron, edge) incidences, the incidences of the facet's three
-// vertices and three edges. The cells around a vertex or an edge are then connected iff its
-// incidences have one root. The pairings are also the complex's adjacency: `across[4t + j]` is
-// 4t' + j' for the facet opposite tetrahedra[t][j], which is the facet opposite
-// tetrahedra[t'][j'], or `no_tetrahedron` on the boundary.
+// tetrahedra a map-based check took seconds). A facet or a tetrahedron is met at its smallest
+// vertex, where the tetrahedra sharing it are paired: the pairings are the complex's adjacency,
+// `across[4t + j]` = 4t' + j' for the facet opposite tetrahedra[t][j], which is the facet opposite
+// tetrahedra[t'][j'], or `no_tetrahedron` on the boundary. Connectivity is then a walk on that
+// adjacency: around an edge, each cell has two facets through it, so its cells form one path or
+// cycle iff a walk from one reaches them all; around a vertex, a search through the three facets
+// through it of each cell (a union-find over every incidence, before, took twice the time).
 constexpr std::uint32_t no_tetrahedron = std::numeric_limits<std::uint32_t>::max();
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                                       std::vector<std::uint32_t>& across)
@@ -45,14 +44,15 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
   // vertices or an edge's other vertex and its cell pack into one 64-bit sort key.
   using Index = std::uint32_t;
   const std::size_t count = tetrahedra.size();
-  if(count >= std::numeric_limits<Index>::max() / 10) throw Invalid_input("too many tetrahedra");
-  std::vector<std::array<Index, 4>> sorted(count);
+  if(count >= std::numeric_limits<Index>::max() / 4) throw Invalid_input("too many tetrahedra");
+  std::vector<std::array<Index, 4>> sorted(count), cells(count);
   std::size_t vertices = 0;
   for(std::size_t t = 0; t < count; ++t) {
     for(int i = 0; i < 4; ++i) {
       if(tetrahedra[t][i] >= std::numeric_limits<Index>::max()) throw Invalid_input("too many vertices");
-      sorted[t][i] = static_cast<Index>(tetrahedra[t][i]);
+      cells[t][i] = static_cast<Index>(tetrahedra[t][i]);
     }
+    sorted[t] = cells[t];
     std::sort(sorted[t].begin(), sorted[t].end());
     vertices = std::max<std::size_t>(vertices, sorted[t][3] + 1);
   }
@@ -66,30 +66,12 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
     for(std::size_t t = 0; t < count; ++t)
       for(Index v : sorted[t]) star[next[v]++] = static_cast<Index>(t);
   }
-  // Union-find over the incidences 10t + i (vertex sorted[t][i]) and 10t + 4 + e (edge e): a
-  // tetrahedron's ten together, for the cache.
-  std::vector<Index> parent(10 * count);
-  std::iota(parent.begin(), parent.end(), Index(0));
-  const auto root = [&](Index i) {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  // The position of v in sorted[t], which holds it: how many of its vertices are smaller.
-  const auto position = [&](std::size_t t, std::size_t v) {
-    const auto& s = sorted[t];
-    return int(s[0] < v) + int(s[1] < v) + int(s[2] < v);
-  };
-  // The incidence of the edge (u, w) of t: 0..5 for the positions (0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3).
-  const auto edge_incidence = [&](std::size_t t, std::size_t u, std::size_t w) {
-    const int i = position(t, std::min(u, w)), j = position(t, std::max(u, w));
-    return static_cast<Index>(10 * t + 4 + (i == 0 ? j - 1 : i + j));
-  };
   const auto name = [](std::size_t i) { return std::to_string(i); };
   across.assign(4 * count, no_tetrahedron);
-  // The position in tetrahedra[t] of its vertex off the facet (u, v, w).
+  // The position in cells[t] of its vertex off the facet (u, v, w).
   const auto opposite = [&](std::size_t t, std::size_t u, std::size_t v, std::size_t w) {
     int j = 0;
-    while(tetrahedra[t][j] == u || tetrahedra[t][j] == v || tetrahedra[t][j] == w) ++j;
+    while(cells[t][j] == u || cells[t][j] == v || cells[t][j] == w) ++j;
     return j;
   };
 
@@ -132,43 +114,87 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
         const Index facet_of_a = 4 * a + opposite(a, u, v, w), facet_of_b = 4 * b + opposite(b, u, v, w);
         across[facet_of_a] = facet_of_b;
         across[facet_of_b] = facet_of_a;
-        const std::array<std::size_t, 3> triangle = {u, v, w};
-        for(int m = 0; m < 3; ++m) {
-          const std::size_t x = triangle[m], y = triangle[(m + 1) % 3];
-          parent[root(static_cast<Index>(10 * a + position(a, x)))] = root(static_cast<Index>(10 * b + position(b, x)));
-          parent[root(edge_incidence(a, x, y))] = root(edge_incidence(b, x, y));
-        }
       }
       i = j - 1;
     }
   }
-  // Around each edge (u, w), u < w, and each vertex: one root, else the lowest cell and the first
-  // one it does not reach.
-  std::vector<std::uint64_t> around;   // (w, t) for each edge (u, w) of each tetrahedron t
+  // A cell is reached when its mark is the current search's number (no clearing between searches).
+  std::vector<Index> mark(count, 0);
+  Index search = 0;
+  // Around each edge (u, w), u < w: the cells in a path or cycle from the lowest. The walk, both
+  // ways from the lowest cell through its two facets containing the edge (those opposite its two
+  // other vertices), ends on the boundary or where the other way closed the cycle. Returns how
+  // many cells it reached.
+  const auto walk_around = [&](Index lowest, Index u, Index w) {
+    mark[lowest] = ++search;
+    std::size_t reached = 1;
+    int ends[2], m = 0;
+    for(int j = 0; j < 4; ++j)
+      if(cells[lowest][j] != u && cells[lowest][j] != w) ends[m++] = j;
+    for(int exit : ends)
+      for(Index t = lowest;;) {
+        const Index next = across[4 * t + exit];
+        if(next == no_tetrahedron || mark[next / 4] == search) break;
+        t = next / 4;
+        mark[t] = search;
+        ++reached;
+        exit = 0;   // out through the other facet containing the edge
+        while(exit == int(next % 4) || cells[t][exit] == u || cells[t][exit] == w) ++exit;
+      }
+    return reached;
+  };
+  // Per other vertex w of u's star (stamped with u + 1, so never cleared): how many of its cells
+  // contain the edge, and whether the edge has been walked around.
+  std::vector<Index> stamp(vertices, 0), around(vertices, 0);
   for(std::size_t u = 0; u < vertices; ++u) {
-    around.clear();
+    const Index self = static_cast<Index>(u);
     for(Index k = first[u]; k < first[u + 1]; ++k)
       for(Index w : sorted[star[k]])
-        if(w > u) around.push_back(std::uint64_t(w) << 32 | star[k]);
-    std::sort(around.begin(), around.end());
-    for(std::size_t i = 0; i < around.size();) {
-      const std::size_t w = around[i] >> 32, lowest = around[i] & 0xffffffffu;
-      const Index r = root(edge_incidence(lowest, u, w));
-      for(; i < around.size() && around[i] >> 32 == w; ++i) {
-        const Index t = around[i] & 0xffffffffu;
-        if(root(edge_incidence(t, u, w)) != r)
-          throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(t) + " meet only at the edge (" + name(u) + ", " +
-                              name(w) + "): the complex is not manifold there");
+        if(w > self) {
+          if(stamp[w] != self + 1) stamp[w] = self + 1, around[w] = 0;
+          ++around[w];
+        }
+    // The star lists its cells in increasing order: an edge is first met at its lowest cell. Of the
+    // edges not connected around, the message names the one with the smallest other vertex.
+    Index broken = no_tetrahedron, broken_lowest = 0;
+    for(Index k = first[u]; k < first[u + 1]; ++k)
+      for(Index w : sorted[star[k]])
+        if(w > self && stamp[w] == self + 1) {
+          stamp[w] = 0;   // walked
+          if(walk_around(star[k], self, w) < around[w] && w < broken) broken = w, broken_lowest = star[k];
+        }
+    if(broken != no_tetrahedron) {
+      walk_around(broken_lowest, self, broken);
+      for(Index k = first[u]; k < first[u + 1]; ++k) {
+        const auto& s = sorted[star[k]];
+        if(std::find(s.begin(), s.end(), broken) != s.end() && mark[star[k]] != search)
+          throw Invalid_input("tetrahedra " + name(broken_lowest) + " and " + name(star[k]) + " meet only at the edge (" + name(u) +
+                              ", " + name(broken) + "): the complex is not manifold there");
       }
     }
   }
+  // Around each vertex: the star searched from its lowest cell through the facets containing the
+  // vertex, else the lowest and the first cell not reached.
+  std::vector<Index> queue;
   for(std::size_t u = 0; u < vertices; ++u) {
     if(first[u] == first[u + 1]) continue;
-    const Index lowest = star[first[u]], r = root(static_cast<Index>(10 * lowest + position(lowest, u)));
-    for(Index k = first[u]; k < first[u + 1]; ++k)
-      if(root(static_cast<Index>(10 * star[k] + position(star[k], u))) != r)
-        throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(star[k]) + " meet only at vertex " + name(u) +
-                            ": the complex is not manifold there");
+    const Index lowest = star[first[u]];
+    ++search;
+    mark[lowest] = search;
+    queue.assign(1, lowest);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(int j = 0; j < 4; ++j) {
+        const Index t = queue[q], next = across[4 * t + j];
+        if(cells[t][j] != u && next != no_tetrahedron && mark[next / 4] != search) {
+          mark[next / 4] = search;
+          queue.push_back(next / 4);
+        }
+      }
+    if(queue.size() < first[u + 1] - first[u])
+      for(Index k = first[u]; k < first[u + 1]; ++k)
+        if(mark[star[k]] != search)
+          throw Invalid_input("tetrahedra " + name(lowest) + " and " + name(star[k]) + " meet only at vertex " + name(u) +
+                              ": the complex is not manifold there");
   }
 }
 
