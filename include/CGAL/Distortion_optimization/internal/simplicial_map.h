@@ -48,6 +48,15 @@ struct Simplicial_map
   std::size_t number_of_cells() const { return cells.size(); }
   std::size_t number_of_vertices() const { return target.size(); }
 
+  void reserve(std::size_t cell_count, std::size_t vertex_count)
+  {
+    cells.reserve(cell_count);
+    inverse_rest.reserve(cell_count);
+    rest_volume.reserve(cell_count);
+    rest_sign.reserve(cell_count);
+    target.reserve(vertex_count);
+  }
+
   // Dm must be invertible and `sign` the orientation of the source cell (+1 or -1), decided by the
   // adapter with an exact predicate: a floating-point determinant may get a nearly flat cell wrong.
   void add_cell(const Cell& cell, const Matrix<n>& Dm, int sign)
