@@ -521,7 +521,7 @@ int run_tetrahedra(const Command_line& c)
   DO::IO::Tetrahedron_soup target = target_read.valid() ? target_read.get() : source;
   if(!c.target.empty()) check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "tetrahedron");
   C3t3 c3t3;
-  const auto handles = DO::c3t3_from_tetrahedra(source.points, source.cells, c3t3);
+  const auto handles = DO::c3t3_from_tetrahedra(source.points, source.cells, c3t3, 1, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
   std::unordered_map<Tr::Vertex_handle, K::Point_3> storage;
   std::unordered_map<Tr::Vertex_handle, std::size_t> index;
   for(std::size_t i = 0; i < handles.size(); ++i)

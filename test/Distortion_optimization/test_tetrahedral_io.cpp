@@ -5,6 +5,7 @@
 #include "test_files.h"
 
 #include <CGAL/Distortion_optimization/IO/medit.h>
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/IO/svg.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
@@ -21,6 +22,7 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <random>
 #include <sstream>
 #include <streambuf>
 #include <string>
@@ -665,6 +667,49 @@ TEST(Readers, EndlessStreamIsReadNoFurtherThanTheLineBound)
   EXPECT_EQ(reader_error(comment + "\n" + triangle_off + comment + "\n", "off"), "");
   EXPECT_EQ(reader_error(comment + "x\n" + triangle_off, "off"), "bad.off: line 1 longer than 1048576 bytes");
   EXPECT_EQ(reader_error(triangle_obj + comment + "x\n", "obj"), "bad.obj: line 5 longer than 1048576 bytes");
+}
+
+// The manifold check splits the vertices among threads: on a block of 6^3 cubes and on random
+// damaged subsets of it (edges and vertices pinched, a cell repeated, a facet shared by three),
+// one, two and three threads find the same adjacency and report the same first failure.
+TEST(Complexes, ManifoldCheckIsTheSameOnAnyNumberOfThreads)
+{
+  const IO::Tetrahedron_soup block = kuhn_block(6);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  std::size_t failures = 0;
+  for(int trial = 0; trial < 60; ++trial) {
+    std::vector<std::array<std::size_t, 4>> cells;
+    const double keep = trial == 0 ? 1. : 0.4 + 0.6 * uniform(random);
+    for(const auto& c : block.cells)
+      if(uniform(random) < keep) cells.push_back(c);
+    if(trial % 5 == 1) cells.push_back(cells[cells.size() / 2]);
+    const std::size_t apex = cells.back()[3];   // on a facet of cell 3: a third cell there if 3 has a neighbour
+    if(trial % 7 == 2 && apex != cells[3][0] && apex != cells[3][1] && apex != cells[3][2] && apex != cells[3][3])
+      cells.push_back({cells[3][0], cells[3][1], cells[3][2], apex});
+    std::vector<std::string> messages;
+    std::vector<std::vector<std::uint32_t>> adjacencies;
+    for(int threads : {1, 2, 3}) {
+      std::vector<std::uint32_t> across;
+      try {
+        DO::internal::check_manifold_tetrahedra(cells, across, DO::internal::Workers(threads));
+        messages.push_back("");
+      } catch(const DO::Invalid_input& e) {
+        messages.push_back(e.what());
+      }
+      adjacencies.push_back(messages.back().empty() ? across : std::vector<std::uint32_t>());
+    }
+    EXPECT_EQ(messages[1], messages[0]) << trial;
+    EXPECT_EQ(messages[2], messages[0]) << trial;
+    EXPECT_EQ(adjacencies[1], adjacencies[0]) << trial;
+    EXPECT_EQ(adjacencies[2], adjacencies[0]) << trial;
+    if(trial == 0) {
+      EXPECT_EQ(messages[0], "");
+      EXPECT_EQ(std::count(adjacencies[0].begin(), adjacencies[0].end(), DO::internal::no_tetrahedron), 2 * 6 * 6 * 6) << "boundary facets";
+    }
+    failures += !messages[0].empty();
+  }
+  EXPECT_GT(failures, 40u);
 }
 
 TEST(Readers, BoundedLinesAcrossTheBufferGrowth)
