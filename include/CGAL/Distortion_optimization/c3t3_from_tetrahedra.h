@@ -53,9 +53,9 @@ struct First_failure
 // opposite tetrahedra[t][j], which is the facet opposite tetrahedra[t'][j'], or `no_tetrahedron`
 // on the boundary. Connectivity is then a walk on that adjacency: around an edge, each cell has
 // two facets through it, so its cells form one path or cycle iff a walk from one reaches them
-// all; around a vertex, a search through the three facets through it of each cell (a union-find
-// over every incidence, before, took twice the time). Failures are reported as a sequential pass
-// finds them: the lowest vertex's, facets before edges before vertices.
+// all; around a vertex, a search through the three facets through it of each cell (54K cells:
+// 26 ms on one thread, where a union-find over every incidence took 30). Failures are reported as
+// a sequential pass finds them: the lowest vertex's, facets before edges before vertices.
 constexpr std::uint32_t no_tetrahedron = std::numeric_limits<std::uint32_t>::max();
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                                       std::vector<std::uint32_t>& across, const Workers& workers = Workers())
@@ -212,7 +212,7 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
           }
         }
       }
-      if(first[u] == first[u + 1] || vertex_failures[r].message.size() > 0) continue;
+      if(first[u] == first[u + 1] || !vertex_failures[r].message.empty()) continue;
       const Index lowest = star[first[u]];
       mark[lowest] = ++search;
       queue.assign(1, lowest);
