@@ -409,9 +409,9 @@ private:
       // A tetrahedral mesh's Newton system fills in far too much for a factorization (about 16 s
       // per step at 5.10^4 tetrahedra): truncated Newton (Nash, "Newton-type minimization via
       // the Lanczos method", 1984), preconditioned conjugate gradients from 0, cut at 60
-      // iterations or a residual of 1e-2; every iterate from 0 descends. Jacobi's preconditioner,
-      // except that a model's steps (nothing fixed) take the Laplacian's for the rest of the run
-      // once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in each cell's
+      // iterations (more where they fall short, below) or a residual of 1e-2; every iterate
+      // from 0 descends. Jacobi's preconditioner, except that a model's steps (nothing fixed)
+      // take the Laplacian's for the rest of the run once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in each cell's
       // scaling (69K-tetrahedron cube mapped by x|x|, K through MIPS: 16.3 s and 96 iterations
       // against 4.7 s and 18). Where cells' stiffnesses differ by orders of magnitude (after
       // untangling), the Laplacian's is the worse of the two: the measures' own steps keep Jacobi's.
@@ -420,12 +420,27 @@ private:
       if(!laplacian_preconditioner_) {
         Eigen::DiagonalPreconditioner<double> jacobi;
         jacobi.compute(H);
-        if(!system_.solve(H, jacobi, b, solution, 60, 1e-2) && takes_model_steps() && !slides_) {
+        typename Laplacian_system<n>::Solve_outcome outcome;
+        if(!system_.solve(H, jacobi, b, solution, jacobi_iterations_, 1e-2, &outcome) && takes_model_steps() && !slides_) {
           laplacian_preconditioner_ = std::make_unique<typename Laplacian_system<n>::Coordinatewise_laplacian>(system_);
           if(!laplacian_preconditioner_->ok()) laplacian_preconditioner_.reset();
+        } else if(is_own_model) {
+          // A direction cut short while its residual is still above half the gradient's is
+          // hardly Newton's (inexact Newton methods need it below: Dembo, Eisenstat and
+          // Steihaug, "Inexact Newton methods", 1982): the next solves may take twice the
+          // iterations, and give them back once the residual is below a tenth. Where cells'
+          // stiffnesses differ by orders of magnitude (a start untangled in the large), 60
+          // iterations may not even lower it: blobby's interior onto the unit ball, unscaled
+          // (27K tetrahedra), symmetric Dirichlet: 100 iterations ended at 4.55, where the
+          // minimum is 1.98 (reached in 34 with this). A proxy's Hessian is only a metric: its
+          // solves keep 60 (C on the same ball map: 960 iterations did not reach a half).
+          if(outcome.iterations >= jacobi_iterations_ && outcome.residual > 0.5)
+            jacobi_iterations_ = std::min(2 * jacobi_iterations_, 16 * newton_iterations);
+          else if(outcome.residual < 0.1)
+            jacobi_iterations_ = std::max(jacobi_iterations_ / 2, newton_iterations);
         }
       } else {
-        system_.solve(H, *laplacian_preconditioner_, b, solution, 60, 1e-2);
+        system_.solve(H, *laplacian_preconditioner_, b, solution, newton_iterations, 1e-2);
       }
     } else {
       solve_by_factorization(H, b, solution);
@@ -587,6 +602,10 @@ private:
   // The steps a proxy's assembled Hessian served (0: none to serve), and how many it serves.
   int metric_steps_ = 0;
   static constexpr int proxy_metric_steps = 3;
+  // The iterations of a tetrahedral Newton solve, and of the next Jacobi-preconditioned one
+  // (see solve_newton_system).
+  static constexpr int newton_iterations = 60;
+  int jacobi_iterations_ = newton_iterations;
   struct No_model {};
   std::conditional_t<is_own_model, No_model, Model> model_;
   std::unique_ptr<Factorization> factorization_;

@@ -165,10 +165,16 @@ public:
   // iterations, with A = P (or the Newton system H, matrix()'s or hessian()'s). The columns are
   // independent solves, one per thread; the products with A run by rows (A is symmetric) on all
   // threads, so that a thread done with its column helps the others. Returns false if some column
-  // did not reach the residual within the iterations.
+  // did not reach the residual within the iterations. If asked, `outcome` gets the largest
+  // relative residual |r| / |b| of the columns and the most iterations one took.
+  struct Solve_outcome
+  {
+    double residual = 0;
+    int iterations = 0;
+  };
   template <class Preconditioner>
   bool solve(const Eigen::SparseMatrix<double>& A, const Preconditioner& preconditioner, const Eigen::MatrixXd& B,
-             Eigen::MatrixXd& X, int iterations, double tolerance) const
+             Eigen::MatrixXd& X, int iterations, double tolerance, Solve_outcome* outcome = nullptr) const
   {
     const std::size_t size = static_cast<std::size_t>(A.rows());
     // A's arrays in locals: the compiler cannot otherwise tell that writing pu leaves them alone.
@@ -202,6 +208,7 @@ public:
       });
     };
     std::vector<unsigned char> converged(B.cols(), 1);
+    std::vector<Solve_outcome> outcomes(B.cols());
     workers_.for_each(B.cols(), 1, [&](std::size_t d) {
       const Eigen::VectorXd b = B.col(d);
       Eigen::VectorXd x = X.col(d), r(size), z(size), p(size), q(size);
@@ -213,11 +220,15 @@ public:
       const double threshold = std::max(tolerance * tolerance * b2, (std::numeric_limits<double>::min)());
       product(x, q);
       r = b - q;
-      if(r.squaredNorm() < threshold) return;
+      if(r.squaredNorm() < threshold) {
+        outcomes[d].residual = std::sqrt(r.squaredNorm() / b2);
+        return;
+      }
       p = preconditioner.solve(r);
       double rz = r.dot(p);
       converged[d] = 0;
       for(int it = 0; it < iterations && !converged[d]; ++it) {
+        outcomes[d].iterations = it + 1;
         product(p, q);
         const double alpha = rz / p.dot(q);
         x += alpha * p;
@@ -230,7 +241,15 @@ public:
         p = z + (rz / rz_old) * p;
       }
       X.col(d) = x;
+      outcomes[d].residual = std::sqrt(r.squaredNorm() / b2);
     });
+    if(outcome) {
+      *outcome = Solve_outcome();
+      for(const Solve_outcome& o : outcomes) {
+        outcome->residual = std::max(outcome->residual, o.residual);
+        outcome->iterations = std::max(outcome->iterations, o.iterations);
+      }
+    }
     return std::find(converged.begin(), converged.end(), 0) == converged.end();
   }
 
