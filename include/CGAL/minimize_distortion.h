@@ -368,7 +368,8 @@ are the points of the triangulation.
                     kink there); with sliding vertices and none constrained, the model's Hessian is the metric of
                     the measure's own gradient. The line search decides on the measure itself. The Newton
                     system of a complex (3 unknowns per free vertex) fills in too much to factor: it is solved
-                    inexactly, by at most 60 Jacobi-preconditioned conjugate gradient iterations (truncated Newton).
+                    inexactly, by Jacobi-preconditioned conjugate gradients (truncated Newton): 60 iterations at
+                    most, up to 960 for a measure's own steps while 60 leave the residual above half the gradient.
                     Sliding vertices take the step restricted to their tangent planes.}
   \cgalParamNEnd
 
