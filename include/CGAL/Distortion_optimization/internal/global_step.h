@@ -411,12 +411,13 @@ private:
       // the Lanczos method", 1984), preconditioned conjugate gradients from 0, cut at 60
       // iterations (more where they fall short, below) or a residual of 1e-2; every iterate
       // from 0 descends. Jacobi's preconditioner, except that a model's steps (nothing fixed)
-      // take the Laplacian's for the rest of the run once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in each cell's
-      // scaling (69K-tetrahedron cube mapped by x|x|, K through MIPS: 16.3 s and 96 iterations
-      // against 4.7 s and 18). Where cells' stiffnesses differ by orders of magnitude (after
-      // untangling), the Laplacian's is the worse of the two: the measures' own steps keep Jacobi's.
-      // So do a model's with sliding vertices, whose tangent planes the coordinatewise Laplacian
-      // does not see (51K Mesh_3 cube onto the ball, C: 24 iterations against 32).
+      // take the Laplacian's for the rest of the run once a Jacobi solve did not converge:
+      // MIPS's Hessian is nearly singular in each cell's scaling (69K-tetrahedron cube mapped by
+      // x|x|, K through MIPS: 16.3 s and 96 iterations against 4.7 s and 18). Where cells'
+      // stiffnesses differ by orders of magnitude (after untangling), the Laplacian's is the
+      // worse of the two: the measures' own steps keep Jacobi's. So do a model's with sliding
+      // vertices, whose tangent planes the coordinatewise Laplacian does not see (51K Mesh_3
+      // cube onto the ball, C: 24 iterations against 32).
       if(!laplacian_preconditioner_) {
         Eigen::DiagonalPreconditioner<double> jacobi;
         jacobi.compute(H);
