@@ -15,6 +15,7 @@
 #include <array>
 #include <functional>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace test_complexes {
@@ -26,6 +27,18 @@ using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
 using Vertex_handle = Tr::Vertex_handle;
 using Target_storage = std::unordered_map<Vertex_handle, Point_3>;
 using Target_map = boost::associative_property_map<Target_storage>;
+
+// The vertices of the complex's boundary facets.
+template <class Complex>
+std::unordered_set<typename Complex::Triangulation::Vertex_handle> boundary_vertices(const Complex& c3t3)
+{
+  std::unordered_set<typename Complex::Triangulation::Vertex_handle> b;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        for(int j = 1; j < 4; ++j) b.insert(c->vertex((i + j) % 4));
+  return b;
+}
 
 // The unit cubes [i, i+1] x [j, j+1] x [k, k+1] of an n^3 block for which keep(i, j, k), each split
 // into the 6 tetrahedra of Freudenthal's (Kuhn's) subdivision, which conform across cubes. All

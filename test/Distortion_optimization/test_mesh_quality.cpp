@@ -49,11 +49,7 @@ Mesh2 equilateral_grid(int k)
 
 std::vector<Vertex_handle> interior_vertices(const C3t3& c3t3)
 {
-  std::unordered_set<Vertex_handle> boundary;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i)))
-        for(int j = 1; j < 4; ++j) boundary.insert(c->vertex((i + j) % 4));
+  const auto boundary = boundary_vertices(c3t3);
   std::vector<Vertex_handle> inside;
   for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
     if(!boundary.count(v) && c3t3.in_dimension(v) != -1) inside.push_back(v);

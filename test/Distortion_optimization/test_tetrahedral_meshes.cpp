@@ -1,6 +1,8 @@
 // minimize_distortion on Mesh_complex_3_in_triangulation_3: Mesh_3 and TetGen meshes, the radial
 // map of the paper's Fig. 5, start maps, write-back only to complex vertices.
 
+#include "test_complexes.h"
+
 #include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
@@ -87,15 +89,7 @@ std::size_t inverted(const C3t3& c3t3, const Target_storage& target)
   return count;
 }
 
-std::unordered_set<Vertex_handle> boundary_vertices(const C3t3& c3t3)
-{
-  std::unordered_set<Vertex_handle> b;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i)))
-        for(int j = 1; j < 4; ++j) b.insert(c->vertex((i + j) % 4));
-  return b;
-}
+using test_complexes::boundary_vertices;
 
 // A property map that records which keys are written.
 struct Recording_map

@@ -6,6 +6,8 @@
 // kept, sizes that follow the input's scale, determinism, bad input), then the package's start
 // maps and optimizer on the result.
 
+#include "test_complexes.h"
+
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
@@ -160,11 +162,7 @@ double check_boundary_on_surface(const C3t3& c3t3, const Surface& surface, doubl
 // inside, under `ball`; returns the number of boundary vertices.
 std::size_t on_the_unit_sphere(const C3t3& c3t3, const Targets& ball)
 {
-  std::set<Tr::Vertex_handle> boundary;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i)))
-        for(int j = 1; j < 4; ++j) boundary.insert(c->vertex((i + j) % 4));
+  const auto boundary = test_complexes::boundary_vertices(c3t3);
   for(const auto& [v, p] : ball) {
     const double r = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point(0, 0, 0))));
     if(boundary.count(v)) EXPECT_NEAR(r, 1., 1e-12);
