@@ -369,7 +369,8 @@ are the points of the triangulation.
                     the measure's own gradient. The line search decides on the measure itself. The Newton
                     system of a complex (3 unknowns per free vertex) fills in too much to factor: it is solved
                     inexactly, by Jacobi-preconditioned conjugate gradients (truncated Newton): 60 iterations at
-                    most, up to 960 for a measure's own steps while 60 leave the residual above half the gradient.
+                    most, up to 960 while 60 leave the residual above half the gradient (not for a model's steps
+                    with nothing sliding, whose preconditioner may change instead).
                     Sliding vertices take the step restricted to their tangent planes.}
   \cgalParamNEnd
 

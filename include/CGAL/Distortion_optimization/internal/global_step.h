@@ -425,7 +425,7 @@ private:
         if(!system_.solve(H, jacobi, b, solution, jacobi_iterations_, 1e-2, &outcome) && takes_model_steps() && !slides_) {
           laplacian_preconditioner_ = std::make_unique<typename Laplacian_system<n>::Coordinatewise_laplacian>(system_);
           if(!laplacian_preconditioner_->ok()) laplacian_preconditioner_.reset();
-        } else if(is_own_model) {
+        } else if(is_own_model || proxy_) {
           // A direction cut short while its residual is still above half the gradient's is
           // hardly Newton's (inexact Newton methods need it below: Dembo, Eisenstat and
           // Steihaug, "Inexact Newton methods", 1982): the next solves may take twice the
@@ -433,8 +433,10 @@ private:
           // stiffnesses differ by orders of magnitude (a start untangled in the large), 60
           // iterations may not even lower it: blobby's interior onto the unit ball, unscaled
           // (27K tetrahedra), symmetric Dirichlet: 100 iterations ended at 4.55, where the
-          // minimum is 1.98 (reached in 34 with this). A proxy's Hessian is only a metric: its
-          // solves keep 60 (C on the same ball map: 960 iterations did not reach a half).
+          // minimum is 1.98 (reached in 34 with this). A proxy's direction, the metric's
+          // gradient, needs them as much: C on that map (2 threads) was at 4.14 after 100
+          // iterations, 2.68 after 1000 (42 s); now 2.07 after 16 s and 1.93 when it
+          // converges (184 iterations), though its solves stay above a half.
           if(outcome.iterations >= jacobi_iterations_ && outcome.residual > 0.5)
             jacobi_iterations_ = std::min(2 * jacobi_iterations_, 16 * newton_iterations);
           else if(outcome.residual < 0.1)
