@@ -433,10 +433,10 @@ private:
           // stiffnesses differ by orders of magnitude (a start untangled in the large), 60
           // iterations may not even lower it: blobby's interior onto the unit ball, unscaled
           // (27K tetrahedra), symmetric Dirichlet: 100 iterations ended at 4.55, where the
-          // minimum is 1.98 (reached in 34 with this). A proxy's direction, the metric's
-          // gradient, needs them as much: C on that map (2 threads) was at 4.14 after 100
-          // iterations, 2.68 after 1000 (42 s); now 2.07 after 16 s and 1.93 when it
-          // converges (184 iterations), though its solves stay above a half.
+          // minimum is 1.98 (reached in 34 with this). A proxy's direction (the measure's
+          // gradient in the model's metric) needs them as much: C on that map (2 threads) was
+          // at 4.14 after 100 iterations, 2.68 after 1000 (42 s); now 2.07 after 16 s and 1.93
+          // when it converges (184 iterations), though its solves stay above a half.
           if(outcome.iterations >= jacobi_iterations_ && outcome.residual > 0.5)
             jacobi_iterations_ = std::min(2 * jacobi_iterations_, 16 * newton_iterations);
           else if(outcome.residual < 0.1)
