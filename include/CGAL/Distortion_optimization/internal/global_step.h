@@ -422,10 +422,13 @@ private:
         Eigen::DiagonalPreconditioner<double> jacobi;
         jacobi.compute(H);
         typename Laplacian_system<n>::Solve_outcome outcome;
-        if(!system_.solve(H, jacobi, b, solution, jacobi_iterations_, 1e-2, &outcome) && takes_model_steps() && !slides_) {
-          laplacian_preconditioner_ = std::make_unique<typename Laplacian_system<n>::Coordinatewise_laplacian>(system_);
-          if(!laplacian_preconditioner_->ok()) laplacian_preconditioner_.reset();
-        } else if(is_own_model || proxy_) {
+        const bool solved = system_.solve(H, jacobi, b, solution, jacobi_iterations_, 1e-2, &outcome);
+        if(takes_model_steps() && !slides_) {
+          if(!solved) {
+            laplacian_preconditioner_ = std::make_unique<typename Laplacian_system<n>::Coordinatewise_laplacian>(system_);
+            if(!laplacian_preconditioner_->ok()) laplacian_preconditioner_.reset();
+          }
+        } else {   // a measure's own steps, or a proxy's
           // A direction cut short while its residual is still above half the gradient's is
           // hardly Newton's (inexact Newton methods need it below: Dembo, Eisenstat and
           // Steihaug, "Inexact Newton methods", 1982): the next solves may take twice the
