@@ -11,7 +11,8 @@
 // determinant shrinks by at least 10% a round, faster when the round gained much. Ours floors
 // sigma at 0.5 rather than 0.1 and lets eps fall at most tenfold a round: on the ABCD cases
 // (benchmark/bench_untangle.sh) this takes a third to a tenth of the rounds, and a faster fall
-// collapses folds into flat strips that no later round opens.
+// collapses folds into flat strips that no later round opens. eps starts at 1, or at 0.01 when
+// the boundary slides (untangle_everywhere() says why).
 //
 // A cell is untangled when its orientation is its source's (exact predicate) and it is not
 // numerically flat (simplicial_map.h): a cell valid by a hair would make a normalized measure
@@ -229,13 +230,27 @@ std::size_t barrier_descent(Optimization_problem<n>& p, Barrier_energy<n>& energ
   return steps;
 }
 
+// Throws Invalid_input if an inverted or flat cell has only constrained vertices: no untangling
+// moves it. Checked on the whole map, so that the message names the cell by its index there.
+template <int n, class GeomTraits>
+void check_tangled_cells_can_move(const Optimization_problem<n>& problem, const GeomTraits& traits)
+{
+  for(std::size_t c = 0; c < problem.map.number_of_cells(); ++c) {
+    bool moves = false;
+    for(auto v : problem.map.cells[c]) moves = moves || problem.is_free[v];
+    if(!moves && is_tangled(problem.map, c, traits))
+      throw Invalid_input("cell " + std::to_string(c) + " is inverted or flat and all its vertices are constrained: "
+                          "no map with these constraints is injective");
+  }
+}
+
 // Untangles problem.map in place (the whole map; untangle() below first tries the tangle's
 // surroundings). options.iterations bounds the rounds (values of eps); a round minimizes the
 // barrier for its eps (barrier_descent, at most 1000 steps, 200 in a part); the visitor is called after each
 // round with the round, the mean barrier energy and the number of cells still inverted, and may
-// stop the run there. Throws
-// Invalid_input, with the map unchanged, when some inverted cell has only constrained vertices, or
-// when the rounds end with inverted cells (no injective map may exist with these constraints).
+// stop the run there. With throw_on_failure (a whole map, not a part), throws Invalid_input, with
+// the map unchanged, when some inverted cell has only constrained vertices, or when the rounds end
+// with inverted cells (no injective map may exist with these constraints).
 template <int n, class GeomTraits>
 Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const GeomTraits& traits, Options options,
                                     bool throw_on_failure = true)
@@ -251,16 +266,18 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   Untangle_report report;
   report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
-  for(std::size_t c = 0; c < nc; ++c) {
-    bool moves = false;
-    for(auto v : problem.map.cells[c]) moves = moves || problem.is_free[v];
-    if(!moves && is_tangled(problem.map, c, traits))
-      throw Invalid_input("cell " + std::to_string(c) + " is inverted or flat and all its vertices are constrained: "
-                          "no map with these constraints is injective");
-  }
+  if(throw_on_failure) check_tangled_cells_can_move(problem, traits);
   std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);
   Untangling_barrier barrier;
   barrier.reference_det = typical_jacobian_determinant(problem.map);
+  // A boundary that slides can shrink along its surface, and at eps = 1 the barrier prefers a
+  // collapsed cell (F = 2 theta / eps = 1 in 3D) to an undistorted one (about 2.15): the first
+  // round then flattened half of the ball map of a tetrahedron (12K of its 25K cells), which no
+  // later round reopened. From eps = 0.01 that map untangles in 2 rounds (1.3 s), and the ball maps
+  // of the other shapes measured in fewer rounds than from 1 (a cross: 0.5 s instead of 8.7). A
+  // fixed or free boundary keeps eps = 1, better on the ABCD cases (the wrench: 15 rounds, not 21).
+  if(std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; }))
+    barrier.epsilon = 0.01;
   Barrier_energy<n> energy(problem, workers);
   // The first step moves a vertex by a tenth of a typical edge.
   double volume = 0;
@@ -383,6 +400,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
   report.inverted_before = report.inverted_after = inverted_vertices(region);
   if(report.inverted_before == 0 || 20 * report.inverted_before > problem.map.number_of_cells())
     return untangle_everywhere(problem, traits, options);
+  check_tangled_cells_can_move(problem, traits);   // before the parts, which number cells their own way
   const std::vector<Vector<n>> start_targets = problem.map.target;
   for(int rings = 0; rings <= 32 && report.inverted_after > 0; rings = rings == 0 ? 1 : 2 * rings) {
     if(rings > 0) inverted_vertices(region);
