@@ -554,14 +554,22 @@ TEST(TetrahedralMeshes, BadInput)
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedra 0, 1 and 2 share the facet (0, 1, 2)"), std::string::npos) << e.what();
   }
+  // Two tetrahedra above the same facet (a fold): each is positive, but they overlap.
+  try {
+    DO::c3t3_from_tetrahedra(fan, {{0, 1, 2, 3}, {2, 1, 0, 7}}, c3t3);
+    ADD_FAILURE() << "a folded pair of tetrahedra was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 1 lie on the same side of their common facet"), std::string::npos) << e.what();
+  }
   // The five tetrahedra of a 4-simplex's boundary: every facet in two of them, every edge and
-  // vertex star connected, but no boundary (they overlap in space).
+  // vertex star connected, but no boundary: they overlap in space, the outer one folded over the
+  // four inside it.
   const std::vector<std::array<double, 3>> five = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3, 0.3, 0.3}};
   try {
     DO::c3t3_from_tetrahedra(five, {{1, 2, 3, 4}, {0, 2, 3, 4}, {0, 1, 3, 4}, {0, 1, 2, 4}, {0, 1, 2, 3}}, c3t3);
     ADD_FAILURE() << "a complex without boundary was accepted";
   } catch(const DO::Invalid_input& e) {
-    EXPECT_NE(std::string(e.what()).find("no boundary"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 4 lie on the same side of their common facet"), std::string::npos) << e.what();
   }
   // Two tetrahedra sharing a facet are a manifold complex; the points in neither get no vertex.
   const auto pair = DO::c3t3_from_tetrahedra(star, {{0, 1, 2, 3}, {0, 2, 1, 6}}, c3t3);
