@@ -279,7 +279,10 @@ Command_line parse(int argc, char** argv)
     else if(option == "--mesh-output") c.mesh_output = value;
     else if(option == "--boundary") c.boundary = value;
     else if(option == "--reference") c.reference = value;
-    else if(option == "--subdivide") c.subdivide = parse_number<std::size_t>(option, value);
+    else if(option == "--subdivide") {
+      c.subdivide = parse_number<std::size_t>(option, value);
+      if(c.subdivide == 0) throw Usage_error("--subdivide expects 1 to 6 levels, not 0");
+    }
     else if(option == "--scheme") c.scheme = value;
     else if(option == "--subdivided-source") c.subdivided_source = value;
     else if(option == "--flat-output") c.flat_output = value;

@@ -385,9 +385,15 @@ int run_triangles(const Command_line& c)
     }
     DO::IO::write_triangle_soup(c.subdivided_source, refined);
     output.cells = refined.cells;
+    // Loop's smoothing may invert cells of the refined map (linear keeps the map's): told, not hidden.
+    const DO::Distortion_statistics refined_distortion = distortion();
+    if(refined_distortion.inverted_cells > 0)
+      std::cerr << "distortion_optimizer: warning: the subdivided map has " << refined_distortion.inverted_cells
+                << " inverted or flat cells (--scheme linear keeps the map injective)\n";
     fields.insert(fields.end(), {{"subdivided_cells", std::to_string(mesh.number_of_faces())},
                                  {"subdivided_vertices", std::to_string(mesh.number_of_vertices())},
-                                 {"subdivided_energy", json_number(distortion().mean_volume)}});
+                                 {"subdivided_energy", json_number(refined_distortion.mean_volume)},
+                                 {"subdivided_inverted_cells", std::to_string(refined_distortion.inverted_cells)}});
   }
   for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
   std::vector<double> values;   // each face's distortion, evaluated once for the outputs that show it
@@ -482,9 +488,22 @@ struct Carried_surface
   double start_energy = 0, final_energy = 0;
 
   Carried_surface(const Command_line& c, const C3t3& c3t3)
-    : soup(DO::IO::read_triangle_soup(c.carry)), mesh(to_mesh(soup, c.carry)),
-      embedding(DO::embed_surface_in_volume(c3t3, mesh, DO::parameters::snap_to_volume(c.snap)))
+    : soup(DO::IO::read_triangle_soup(c.carry)), mesh(to_mesh(soup, c.carry)), embedding(embed(c, c3t3, mesh))
   {}
+
+  // The vertices outside the volume named in the tool's words (--snap, not the named parameter).
+  static DO::Volume_embedding<C3t3> embed(const Command_line& c, const C3t3& c3t3, const Mesh& mesh)
+  {
+    try {
+      return DO::embed_surface_in_volume(c3t3, mesh, DO::parameters::snap_to_volume(c.snap));
+    } catch(const DO::Points_outside_volume& e) {
+      const std::vector<std::size_t>& outside = e.indices();
+      std::string m = c.carry + ": " + std::to_string(outside.size()) + (outside.size() == 1 ? " vertex is" : " vertices are") +
+                      " outside the volume: ";
+      for(std::size_t k = 0; k < std::min<std::size_t>(outside.size(), 10); ++k) m += (k ? ", " : "") + std::to_string(outside[k]);
+      throw DO::Invalid_input(m + (outside.size() > 10 ? ", ..." : "") + " (--snap moves such vertices onto its boundary)");
+    }
+  }
 
   // The mean distortion (volume-weighted, as the tool's energies) of the surface under `target`.
   template <class Target>
@@ -538,8 +557,21 @@ int run_tetrahedra(const Command_line& c)
   Command_line run = c;
   if(c.volume_mode()) {
     const K::Point_3 center = c.center.empty() ? DO::volume_centroid(c3t3) : K::Point_3(c.center[0], c.center[1], c.center[2]);
-    if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
-    else DO::radial_map(c3t3, target_map, center);
+    // The messages in the tool's words: its options rather than the library's functions.
+    try {
+      if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
+      else DO::radial_map(c3t3, target_map, center);
+    } catch(const DO::Invalid_input& e) {
+      const std::string message = e.what();
+      if(message.find("not strictly inside") != std::string::npos)
+        throw DO::Invalid_input(c.center.empty() ? "the centroid of the volume is outside it (a volume in several parts, or one "
+                                                   "curved around its centroid): give a --center inside"
+                                                 : "--center is not inside the volume");
+      if(message.find("not star-shaped") != std::string::npos)
+        throw DO::Invalid_input("the volume is not star-shaped about the centre (a boundary facet faces it): give another "
+                                "--center, or take --start radial with --boundary slide");
+      throw;
+    }
     run.untangle = true;
   }
   if(carried) carried->start_energy = carried->energy(c, target_map);
@@ -578,12 +610,19 @@ int run_tetrahedra(const Command_line& c)
         ? CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Sphere_surface(), np))
         : CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map), np));
     }
-    return with_boundary_guard(c, [&](bool guard) {
-      return c.fix == "boundary"
-        ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(run, weights))
-        : CGAL::minimize_distortion(c3t3, target_map, measure,
-            DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
-    });
+    try {
+      return with_boundary_guard(c, [&](bool guard) {
+        return c.fix == "boundary"
+          ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(run, weights))
+          : CGAL::minimize_distortion(c3t3, target_map, measure,
+              DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
+      });
+    } catch(const DO::Invalid_input& e) {
+      // The tool's own start inverts cells that its fixed boundary keeps inverted (a radial map
+      // of a non-convex volume): the remedy is the sliding boundary.
+      if(!c.volume_mode() || std::string(e.what()).find("constrain") == std::string::npos) throw;
+      throw DO::Invalid_input(std::string(e.what()) + " (--boundary slide lets the boundary vertices move)");
+    }
   });
   DO::IO::Tetrahedron_soup output = source;
   for(std::size_t i = 0; i < handles.size(); ++i)

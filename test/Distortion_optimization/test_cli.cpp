@@ -713,6 +713,40 @@ TEST(CommandLine, AllOutputsOrNoneAndNoFileOfTheUserTouched)
   EXPECT_EQ(leftovers(r), 0u);
 }
 
+// An output that is a symbolic link fills the file it names, and the link stays; a device or a
+// pipe (/dev/stdout, /dev/null) is written into, never replaced by a file.
+TEST(CommandLine, OutputsGoThroughLinksAndIntoDevices)
+{
+  const std::string s = temp("s6l.off"), t = temp("t6l.off"), o = temp("o6l.off"), r = temp("r6l.json"), link = temp("link6l.json");
+  write_planar_pair(s, t);
+  std::remove(r.c_str());
+  std::remove(link.c_str());
+  std::ofstream(r) << "old\n";
+  ASSERT_EQ(symlink(r.c_str(), link.c_str()), 0);
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --report " + link);
+  ASSERT_EQ(result.status, 0) << result.output;
+  struct stat st;
+  ASSERT_EQ(::lstat(link.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode));
+  EXPECT_NE(slurp(r).find("\"final_energy\""), std::string::npos);
+  EXPECT_EQ(leftovers(r), 0u);
+  result = run("--source " + s + " --target " + t + " --output " + o + " --quiet --report /dev/stdout");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("\"final_energy\""), std::string::npos) << result.output;
+  result = run("--source " + s + " --target " + t + " --output " + o + " --report /dev/null");
+  ASSERT_EQ(result.status, 0) << result.output;
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  // A link to nothing is refused before any work, and nothing is written.
+  std::remove(o.c_str());
+  std::remove(link.c_str());
+  ASSERT_EQ(symlink(temp("nowhere/r.json").c_str(), link.c_str()), 0);
+  result = run("--source " + s + " --target " + t + " --output " + o + " --report " + link);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("a symbolic link to nothing"), std::string::npos) << result.output;
+  EXPECT_FALSE(exists(o));
+}
+
 TEST(CommandLine, AnEndlessLineInTheFixFileCostsNoMemory)
 {
   const std::string s = temp("s7.off"), t = temp("t7.off"), o = temp("o7.off"), fix = temp("endless.txt");
@@ -879,11 +913,26 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   for(std::size_t f = 0; f < 12; ++f) two.cells.push_back({two.cells[f][0] + 8, two.cells[f][1] + 8, two.cells[f][2] + 8});
   IO::write_triangle_soup(crossing, two);
   expect_failure("--source " + crossing + " --start ball" + base, 1, "cross");
-  expect_failure("--source " + cube + " --start ball --center 5,0,0" + base, 1, "not strictly inside");
+  expect_failure("--source " + cube + " --start ball --center 5,0,0" + base, 1, "--center is not inside the volume");
+  expect_failure("--source " + cube + " --start radial --center 5,0,0" + base, 1, "--center is not inside the volume");
+  // Two cubes apart: their centroid, the default centre, is in neither.
+  const std::string apart = temp("apart.off");
+  IO::Triangle_soup pair = IO::read_triangle_soup(cube);
+  for(std::size_t i = 0; i < 8; ++i) pair.points.push_back({pair.points[i][0] + 3, pair.points[i][1], pair.points[i][2]});
+  for(std::size_t f = 0; f < 12; ++f) pair.cells.push_back({pair.cells[f][0] + 8, pair.cells[f][1] + 8, pair.cells[f][2] + 8});
+  IO::write_triangle_soup(apart, pair);
+  expect_failure("--source " + apart + " --start radial" + base, 1, "the centroid of the volume is outside it");
+  // A tetrahedral source whose cells fold over each other is refused before any work.
+  const std::string folded = temp("folded.mesh");
+  IO::Tetrahedron_soup fold;
+  fold.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 1}};
+  fold.cells = {{0, 1, 2, 3}, {2, 1, 0, 4}};
+  IO::write_MEDIT_soup(folded, fold);
+  expect_failure("--source " + folded + " --start radial --center 0.1,0.1,0.1 --output " + o, 1, "lie on the same side of their common facet");
   const std::string outside = temp("outside.off");
   write_octahedron(outside, 0.5, 0.8);   // reaches x = 1.3
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + outside + " --carry-output " + c, 1,
-                 "outside the volume");
+                 "1 vertex is outside the volume: 0 (--snap moves such vertices onto its boundary)");
   // The command line.
   expect_failure("--source " + cube + " --start sphere" + base, 2, "--start is ball or radial");
   expect_failure("--source " + cube + " --start ball --target " + cube + base, 2, "give one");
@@ -894,6 +943,25 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure("--source " + cube + " --start ball --cell-size 0" + " --output " + o, 2, "--cell-size must be a positive number");
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + cube, 2, "go together");
   expect_failure("--source " + cube + " --start ball --output " + temp("x.off"), 2, "--output must end in .mesh or .vtu");
+}
+
+// A closed surface far from the origin (a cube centred at (10^9, 10^9, 10^9)) is meshed and mapped
+// like any other: its volume, summed about the origin, once came out as none.
+TEST(CommandLine, VolumeModeTakesASurfaceFarFromTheOrigin)
+{
+  const std::string cube = temp("cube_far.off"), o = temp("far.mesh"), m = temp("far_source.mesh");
+  write_cube(cube);
+  IO::Triangle_soup far = IO::read_triangle_soup(cube);
+  for(auto& p : far.points)
+    for(double& x : p) x += 1e9;
+  IO::write_triangle_soup(cube, far);
+  const Tool_run result = run("--source " + cube + " --start ball --cell-size 0.5 --iterations 3 --output " + o + " --mesh-output " + m);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Tetrahedron_soup source = IO::read_tetrahedron_soup(m), target = IO::read_tetrahedron_soup(o);
+  EXPECT_EQ(non_positive_tetrahedra(target), 0u);
+  EXPECT_EQ(source.cells, target.cells);
+  for(const auto& p : source.points)
+    for(double x : p) EXPECT_NEAR(x, 1e9, 1.000001);
 }
 
 // --reference ideal (issue 16): the source mesh itself improved against regular cells, 2D with a
@@ -987,6 +1055,7 @@ TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
     EXPECT_EQ(json_value(json, "cells"), double(source.cells.size()));
     EXPECT_EQ(json_value(json, "subdivided_cells"), double(refined.cells.size()));
     EXPECT_EQ(json_value(json, "subdivided_vertices"), double(refined.points.size()));
+    EXPECT_EQ(json_value(json, "subdivided_inverted_cells"), 0.);
     if(scheme == "linear") {
       EXPECT_NEAR(json_value(json, "subdivided_energy"), json_value(json, "final_energy"), 1e-12 * json_value(json, "final_energy"));
       for(std::size_t v = 0; v < source.points.size(); ++v) EXPECT_EQ(refined.points[v], source.points[v]);
@@ -996,6 +1065,7 @@ TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
   }
   for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
         {" --subdivide 1", "go together"},
+        {" --subdivide 0 --subdivided-source " + s2, "--subdivide expects 1 to 6 levels"},
         {" --scheme loop", "--scheme needs --subdivide"},
         {" --subdivide 1 --scheme cubic --subdivided-source " + s2, "--scheme is linear or loop"},
         {" --subdivide 1 --subdivided-source " + t, "would be overwritten"}}) {

@@ -42,8 +42,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -266,10 +268,39 @@ struct Checked_surface
       for(auto v : vertices_around_face(halfedge(f, first), first)) t[k++] = std::size_t(v);
     }
     surface = build(points, triangles);
-    volume = CGAL::to_double(PMP::volume(surface));
-    area = CGAL::to_double(PMP::area(surface));
-    if(!(volume > 0) || !std::isfinite(volume))
+    // The volume, as tetrahedra from the centre of the bounding box in units of its largest extent:
+    // PMP::volume() sums them from the origin, where far from it rounding swamps the volume (a unit
+    // sphere centred at (10^9, 10^9, 10^9) measured no volume at all).
+    std::array<double, 3> low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for(const Point_3& p : points)
+      for(int k = 0; k < 3; ++k) {
+        low[k] = (std::min)(low[k], CGAL::to_double(p[k]));
+        high[k] = (std::max)(high[k], CGAL::to_double(p[k]));
+      }
+    const double extent = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+    const auto unit = [&](std::size_t i) {
+      std::array<double, 3> u;
+      for(int k = 0; k < 3; ++k) u[k] = (CGAL::to_double(points[i][k]) - (low[k] + high[k]) / 2) / extent;
+      return u;
+    };
+    double unit_volume = 0;
+    for(const Triangle& t : triangles) {
+      const auto a = unit(t[0]), b = unit(t[1]), c = unit(t[2]);
+      unit_volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    }
+    if(!(unit_volume > 0) || !std::isfinite(unit_volume))
       throw Invalid_input("mesh_interior: the surface encloses no volume");
+    volume = unit_volume * extent * extent * extent;
+    area = CGAL::to_double(PMP::area(surface));
+    if(!(volume > 0) || !std::isfinite(volume) || !(area > 0) || !std::isfinite(area))
+    {
+      char size[32];
+      std::snprintf(size, sizeof size, "%g", extent);
+      throw Invalid_input(std::string("mesh_interior: the surface's size (") + size +
+                          ") is too large or too small for its volume in double precision: scale it");
+    }
   }
 
   // The surface of the triangles, each rotated to start at its smallest index (vertex i of the

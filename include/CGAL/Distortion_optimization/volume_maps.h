@@ -104,10 +104,15 @@ internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
 /// `(p - center) |p - center|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the
 /// unit sphere and shrinks the inside). Injective on any domain, but with a conformal distortion
 /// that grows without bound towards the centre: a hard start for the optimizer.
+/// \throws Invalid_input if `center` is not strictly inside the domain (exact predicates), as for
+/// `star_shaped_to_unit_ball()`: about a point outside, the map is no longer the one that shrinks
+/// the domain onto its centre. `target` is then unchanged.
 template <class C3T3, class TargetMap>
 void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
 {
   using Point_3 = internal::C3t3_point<C3T3>;
+  if(!internal::is_strictly_inside(c3t3, center))
+    throw Invalid_input("the centre of the radial map is not strictly inside the domain");
   map_vertices(c3t3, target, [&](const Point_3& p) {
     const auto u = p - center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));

@@ -81,19 +81,29 @@ inline void unlink_temporaries_and_reraise(int signal)
 
 /// \ingroup PkgDistortionOptimizationIO
 /// A new, empty file with a unique name beside `path` (in its folder, hidden, ending in `suffix`),
-/// removed when this object is destroyed unless `keep()` was called; while it exists it is also
+/// removed when this object is destroyed unless it was renamed; while it exists it is also
 /// removed if the program is interrupted after `remove_temporary_files_on_signals()`. A program
-/// writes there and renames the file to `path` once everything was written.
+/// writes there and renames the file to `path` once everything was written. Where `path` is a
+/// symbolic link, the file it names is replaced and the link kept; where it is a device or a pipe
+/// (`/dev/null`, `/dev/stdout`), the temporary file is made in the temporary folder (`TMPDIR`,
+/// else `/tmp`) and its bytes are written into `path` at the end, which is never replaced.
 class Temporary_file
 {
 public:
-  /// \throws Invalid_input if the folder of `path` does not exist or is not writable.
+  /// \throws Invalid_input if the folder of `path` does not exist or is not writable, if `path`
+  /// is a folder, or a symbolic link to nothing.
   explicit Temporary_file(const std::string& path, const std::string& suffix = "")
   {
-    const std::size_t slash = path.find_last_of('/');
-    const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    bool special = false;
+    const std::string place = destination(path, &special);
+    const std::size_t slash = place.find_last_of('/');
+    std::string folder = slash == std::string::npos ? "" : place.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? place : place.substr(slash + 1);
     if(base.empty()) throw Invalid_input(path + ": not a file name");
+    if(special) {
+      const char* tmp = std::getenv("TMPDIR");
+      folder = std::string(tmp != nullptr && *tmp != 0 ? tmp : "/tmp") + "/";
+    }
     std::string name = folder + "." + base + ".XXXXXX" + suffix;
     const int fd = ::mkstemps(&name[0], static_cast<int>(suffix.size()));
     if(fd < 0) throw Invalid_input(path + ": cannot write (does the folder exist, and is it writable?)");
@@ -114,17 +124,47 @@ public:
   }
 
   const std::string& path() const { return path_; }
-  /// Renames the file to `target`, after which it is no longer temporary.
-  /// \throws Invalid_input if the rename fails (the temporary file is then removed).
+  /// Renames the file to `target` (the file a symbolic link names; into a device or a pipe, its
+  /// bytes are written), after which it is no longer temporary.
+  /// \throws Invalid_input if the rename or the write fails (the temporary file is then removed).
   void rename_to(const std::string& target)
   {
-    if(std::rename(path_.c_str(), target.c_str()) != 0) throw Invalid_input(target + ": cannot replace the file");
+    bool special = false;
+    const std::string place = destination(target, &special);
+    if(special) {
+      {
+        std::ifstream in(path_, std::ios::binary);
+        std::ofstream out(place, std::ios::binary);
+        if(!in || !out || !(out << in.rdbuf()) || !out.flush()) throw Invalid_input(target + ": write error");
+      }
+      return;   // the temporary file is removed by the destructor
+    }
+    if(std::rename(path_.c_str(), place.c_str()) != 0) throw Invalid_input(target + ": cannot replace the file");
     internal::Temporary_registry::get().remove(slot_);
     slot_ = -1;
     kept_ = true;
   }
 
 private:
+  // Where the bytes for `path` go: the file a symbolic link names, and whether that is a device
+  // or a pipe rather than a file to replace.
+  static std::string destination(const std::string& path, bool* special)
+  {
+    struct stat s;
+    *special = false;
+    if(::lstat(path.c_str(), &s) != 0) return path;   // a new file
+    const bool link = S_ISLNK(s.st_mode);
+    if(link && ::stat(path.c_str(), &s) != 0) throw Invalid_input(path + ": a symbolic link to nothing");
+    if(S_ISDIR(s.st_mode)) throw Invalid_input(path + ": a folder, not a file name");
+    *special = !S_ISREG(s.st_mode);
+    if(!link || *special) return path;   // a device is written through its name (/dev/stdout too)
+    char* resolved = ::realpath(path.c_str(), nullptr);
+    if(resolved == nullptr) throw Invalid_input(path + ": cannot resolve the symbolic link");
+    const std::string place = resolved;
+    std::free(resolved);
+    return place;
+  }
+
   std::string path_;
   int slot_ = -1;
   bool kept_ = false;

@@ -13,10 +13,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
@@ -34,6 +36,10 @@ public:
   {
 #ifdef CGAL_LINKED_WITH_TBB
     threads_ = requested <= 0 ? tbb::this_task_arena::max_concurrency() : requested;   // TBB 2019 and oneTBB
+    // More threads than the hardware's: TBB would run fewer and print a warning on the standard
+    // error; the threads asked for are allowed while these workers exist.
+    if(threads_ > tbb::this_task_arena::max_concurrency())
+      allowance_.emplace(tbb::global_control::max_allowed_parallelism, threads_);
     if(threads_ > 1) arena_ = std::make_unique<tbb::task_arena>(threads_);
 #else
     (void)requested;
@@ -98,6 +104,7 @@ public:
 private:
   int threads_ = 1;
 #ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> allowance_;   // before the arena, which it outlives
   std::unique_ptr<tbb::task_arena> arena_;
 #endif
 };
