@@ -60,6 +60,7 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -247,6 +248,9 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
               cells, vertices, measure_name.c_str(), r.initial_energy, r.final_energy, r.iterations, r.seconds,
               r.inverted_cells);
   if(r.stopped_by_visitor) std::printf("stopped_by_time_limit true\n");
+  if(r.stopped_by_visitor && r.inverted_cells > 0)   // written as documented, but not a valid map
+    std::fprintf(stderr, "distortion_optimizer: warning: the time limit stopped the untangling: the result has %zu "
+                 "inverted or flat cells\n", r.inverted_cells);
   if(c.untangle || c.volume_mode())
     std::printf("inverted_start_cells  %zu\nuntangle_iterations   %zu\nuntangle_seconds      %.3f\n", r.inverted_start_cells,
                 r.untangle_iterations, r.untangle_seconds);
@@ -314,12 +318,19 @@ int run_triangles(const Command_line& c)
     // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
     // planar source listed clockwise gets its mirror image. (A surface is compared in each face's
     // own frame, where any consistent orientation is positive.)
-    double signed_area = 0;
+    std::size_t left = 0, right = 0;   // the triangles' orientations (exact: no area underflows far from unit size)
     for(const auto& t : source.cells) {
       const auto &a = source.points[t[0]], &b = source.points[t[1]], &d = source.points[t[2]];
-      signed_area += (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+      const CGAL::Orientation o = CGAL::orientation(K::Point_2(a[0], a[1]), K::Point_2(b[0], b[1]), K::Point_2(d[0], d[1]));
+      left += o == CGAL::LEFT_TURN;
+      right += o == CGAL::RIGHT_TURN;
     }
-    if(planar && signed_area < 0)
+    // A planar source that folds (triangles of both orientations) inverts some cells of any start.
+    if(planar && left > 0 && right > 0 && !c.untangle)
+      throw DO::Invalid_input(c.source + ": the planar source folds over itself (" + std::to_string(std::min(left, right)) +
+                              " of its triangles are oriented against the others), so the tool's Tutte start inverts "
+                              "them: --untangle unfolds it");
+    if(planar && right > left)
       for(Vertex v : mesh.vertices()) uv[v] = K::Point_2(uv[v].x(), -uv[v].y());
   }
 
@@ -427,9 +438,19 @@ int run_triangles(const Command_line& c)
       write_pictures(c, DO::IO::triangle_panel("before", points, output.cells, DO::radius_ratios(points, output.cells)),
                      DO::IO::triangle_panel("after", output.points, output.cells, DO::radius_ratios(output.points, output.cells)),
                      "radius ratio", measure_name, r);
-    else
+    else {
+      // Red (an infinite value) marks the cells the map inverts or flattens, also under a measure
+      // finite there (ARAP, Dirichlet); a planar source's own orientation is the positive one.
+      for(std::size_t f = 0; f < output.cells.size(); ++f) {
+        const auto& t = output.cells[f];
+        const Vertex a(static_cast<Mesh::size_type>(t[0])), b(static_cast<Mesh::size_type>(t[1])), d(static_cast<Mesh::size_type>(t[2]));
+        const CGAL::Orientation o = CGAL::orientation(uv[a], uv[b], uv[d]);
+        if(o == CGAL::COLLINEAR || o != (planar ? CGAL::orientation(source_2[a], source_2[b], source_2[d]) : CGAL::LEFT_TURN))
+          values[f] = std::numeric_limits<double>::infinity();
+      }
       write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, values),
                      DO::IO::triangle_panel("map", output.points, output.cells, values), measure_name, measure_name, r);
+    }
   } else {
     write_pictures(c, {}, {}, measure_name, measure_name, r);
   }
@@ -497,11 +518,7 @@ struct Carried_surface
     try {
       return DO::embed_surface_in_volume(c3t3, mesh, DO::parameters::snap_to_volume(c.snap));
     } catch(const DO::Points_outside_volume& e) {
-      const std::vector<std::size_t>& outside = e.indices();
-      std::string m = c.carry + ": " + std::to_string(outside.size()) + (outside.size() == 1 ? " vertex is" : " vertices are") +
-                      " outside the volume: ";
-      for(std::size_t k = 0; k < std::min<std::size_t>(outside.size(), 10); ++k) m += (k ? ", " : "") + std::to_string(outside[k]);
-      throw DO::Invalid_input(m + (outside.size() > 10 ? ", ..." : "") + " (--snap moves such vertices onto its boundary)");
+      throw DO::Invalid_input(c.carry + ": " + e.listing() + " (--snap moves such points onto its boundary)");
     }
   }
 
@@ -561,16 +578,13 @@ int run_tetrahedra(const Command_line& c)
     try {
       if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
       else DO::radial_map(c3t3, target_map, center);
-    } catch(const DO::Invalid_input& e) {
-      const std::string message = e.what();
-      if(message.find("not strictly inside") != std::string::npos)
-        throw DO::Invalid_input(c.center.empty() ? "the centroid of the volume is outside it (a volume in several parts, or one "
-                                                   "curved around its centroid): give a --center inside"
-                                                 : "--center is not inside the volume");
-      if(message.find("not star-shaped") != std::string::npos)
-        throw DO::Invalid_input("the volume is not star-shaped about the centre (a boundary facet faces it): give another "
-                                "--center, or take --start radial with --boundary slide");
-      throw;
+    } catch(const DO::Center_outside_domain&) {
+      throw DO::Invalid_input(c.center.empty() ? "the centroid of the volume is outside it (a volume in several parts, or one "
+                                                 "curved around its centroid): give a --center inside"
+                                               : "--center is not inside the volume");
+    } catch(const DO::Domain_not_star_shaped&) {
+      throw DO::Invalid_input("the volume is not star-shaped about the centre (a boundary facet faces it): give another "
+                              "--center, or take --start radial with --boundary slide");
     }
     run.untangle = true;
   }
@@ -617,10 +631,10 @@ int run_tetrahedra(const Command_line& c)
           : CGAL::minimize_distortion(c3t3, target_map, measure,
               DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
       });
-    } catch(const DO::Invalid_input& e) {
+    } catch(const DO::Unmovable_inverted_cell& e) {
       // The tool's own start inverts cells that its fixed boundary keeps inverted (a radial map
       // of a non-convex volume): the remedy is the sliding boundary.
-      if(!c.volume_mode() || std::string(e.what()).find("constrain") == std::string::npos) throw;
+      if(!c.volume_mode()) throw;
       throw DO::Invalid_input(std::string(e.what()) + " (--boundary slide lets the boundary vertices move)");
     }
   });
@@ -663,10 +677,18 @@ int run_tetrahedra(const Command_line& c)
                                                   DO::radius_ratios(source.points, source.cells)),
                    DO::IO::cross_section_panel("after, section z = middle", output.points, output.cells,
                                                DO::radius_ratios(output.points, output.cells)), "radius ratio", measure_name, r);
-  else
+  else {
+    // Red (an infinite value) marks the cells the map inverts or flattens, whatever the measure.
+    for(std::size_t i = 0; i < source.cells.size(); ++i) {
+      const auto point = [&](std::size_t v) { return K::Point_3(output.points[v][0], output.points[v][1], output.points[v][2]); };
+      const auto& t = source.cells[i];
+      if(CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) != CGAL::POSITIVE)
+        values[i] = std::numeric_limits<double>::infinity();
+    }
     write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, values),
                    DO::IO::cross_section_panel("map, section z = middle", output.points, output.cells, values),
                    measure_name, measure_name, r);
+  }
   std::vector<std::pair<std::string, std::string>> fields;
   if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(c3t3, target_map));
   if(c.volume_mode() || carried) {
@@ -692,7 +714,7 @@ int run_tetrahedra(const Command_line& c)
 
 // All outputs or none: each output gets a temporary file beside it before any input is read (so a
 // folder that cannot be written fails first), the run writes there, and the files are renamed
-// only when every one was written.
+// only when every one was written (after the outputs into devices, whose writes may still fail).
 int run(const Command_line& c)
 {
   const auto suffix = [](const std::string& path) {
@@ -711,9 +733,21 @@ int run(const Command_line& c)
       staged.*outputs[i] = files[i]->path();
     }
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
-  const int status = tetrahedra ? run_tetrahedra(staged) : run_triangles(staged);
-  for(std::size_t i = 0; i < outputs.size(); ++i)
-    if(files[i]) files[i]->rename_to(c.*outputs[i]);
+  int status = 0;
+  try {
+    status = tetrahedra ? run_tetrahedra(staged) : run_triangles(staged);
+  } catch(const DO::Invalid_input& e) {
+    // A writer names the file it writes: the user's name, not the hidden temporary one.
+    std::string message = e.what();
+    for(std::size_t i = 0; i < outputs.size(); ++i)
+      for(std::size_t at; files[i] && (at = message.find(files[i]->path())) != std::string::npos;)
+        message.replace(at, files[i]->path().size(), c.*outputs[i]);
+    throw DO::Invalid_input(message);
+  }
+  // Devices and pipes first: writing into them may fail (/dev/full), renaming a file hardly can.
+  for(const bool streamed : {true, false})
+    for(std::size_t i = 0; i < outputs.size(); ++i)
+      if(files[i] && files[i]->is_streamed() == streamed) files[i]->rename_to(c.*outputs[i]);
   return status;
 }
 

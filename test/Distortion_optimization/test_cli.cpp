@@ -455,6 +455,40 @@ TEST(CommandLine, PicturesAndDisplacements)
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_EQ(vtu_array(slurp(temp("pic_ply.vtu")), "Points"), positions);
 
+  // Under a measure finite on inverted cells (ARAP), the picture still shows them in red; the plot
+  // of a run whose start has an infinite energy leaves that point out.
+  {
+    IO::Triangle_soup folded = IO::read_triangle_soup(t);
+    folded.points[6 * 13 + 6][0] += 0.5;   // the middle vertex, three columns over
+    IO::write_triangle_soup(temp("pic_folded.off"), folded);
+  }
+  result = run("--source " + s + " --target " + temp("pic_folded.off") + " --output " + temp("x.off") + " --svg " + p +
+               " --measure arap --iterations 0 --harmonic-start off --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const double inverted = json_value(slurp(r), "inverted_cells");
+  EXPECT_GT(inverted, 0);
+  EXPECT_EQ(double(occurrences(slurp(p), "fill=\"#d62728\"/>")), inverted);
+  EXPECT_NE(slurp(p).find("</tspan> " + std::to_string(int(inverted)) + " inverted or flat"), std::string::npos);
+  // The sphere with its inner vertices shuffled (each at another's place): so tangled that the
+  // first round of untangling, after which the limit stops the run, leaves inverted cells.
+  const IO::Tetrahedron_soup sphere = IO::read_tetrahedron_soup(data("sphere.mesh"));
+  IO::Tetrahedron_soup shuffled = sphere;
+  std::vector<std::size_t> inner;
+  double radius = 0;
+  for(const auto& q : sphere.points) radius = std::max(radius, std::hypot(q[0], q[1], q[2]));
+  for(std::size_t v = 0; v < sphere.points.size(); ++v)
+    if(std::hypot(sphere.points[v][0], sphere.points[v][1], sphere.points[v][2]) < 0.98 * radius) inner.push_back(v);
+  std::vector<std::size_t> places = inner;
+  std::shuffle(places.begin(), places.end(), std::mt19937(1));
+  for(std::size_t k = 0; k < inner.size(); ++k) shuffled.points[inner[k]] = sphere.points[places[k]];
+  IO::write_MEDIT_soup(temp("pic_shuffled.mesh"), shuffled);
+  result = run("--source " + data("sphere.mesh") + " --target " + temp("pic_shuffled.mesh") + " --output " + temp("x.mesh") +
+               " --energy-plot " + e + " --untangle --time-limit 1e-9 --harmonic-start off");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(slurp(e).find(" energies not finite, not drawn"), std::string::npos);
+  EXPECT_NE(result.output.find("warning: the time limit stopped the untangling: the result has "), std::string::npos)
+    << result.output;
+
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + temp("x.off") + " --svg-both").status, 2);
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + temp("x.off") + " --svg " + temp("x.png")).status, 2);
 }
@@ -520,8 +554,18 @@ TEST(CommandLine, WeightsOrdersSweepsAndWeightedSums)
     std::ofstream varied(w);
     for(std::size_t v = 0; v < source.points.size(); ++v) varied << (v % 7 == 0 ? 10 : 1) << "\n";
   }
-  energies("--measure symmetric_dirichlet --iterations 30 --vertex-weights " + w);
-  EXPECT_NE(slurp(o), unweighted_map);
+  const auto varied = energies("--measure symmetric_dirichlet --iterations 30 --vertex-weights " + w);
+  const std::string varied_map = slurp(o);
+  EXPECT_NE(varied_map, unweighted_map);
+  // The same weights times 2^1020, near the largest double: the same map and energies, not
+  // sums that overflow to NaN.
+  {
+    std::ofstream huge(w);
+    huge.precision(17);
+    for(std::size_t v = 0; v < source.points.size(); ++v) huge << std::ldexp(v % 7 == 0 ? 10. : 1., 1020) << "\n";
+  }
+  EXPECT_EQ(energies("--measure symmetric_dirichlet --iterations 30 --vertex-weights " + w), varied);
+  EXPECT_EQ(slurp(o), varied_map);
   std::ofstream(bad) << "1\n-2\n";
   Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --vertex-weights " + bad);
   EXPECT_EQ(result.status, 1);
@@ -636,6 +680,13 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   IO::write_triangle_soup(inverted, flipped);
   expect_failure(base + " --target " + inverted + " --measure conformal", 1, "inverted");
 
+  // A target 2^-600 times the source's size: no measure can be evaluated in doubles.
+  IO::Triangle_soup tiny = IO::read_triangle_soup(t);
+  for(auto& q : tiny.points)
+    for(double& x : q) x = std::ldexp(x, -600);
+  IO::write_triangle_soup(temp("tiny.off"), tiny);
+  expect_failure(base + " --target " + temp("tiny.off"), 1, "and the source's (2^0) differ by more than 2^256");
+
   EXPECT_EQ(run("--help").status, 0);
 }
 
@@ -737,6 +788,15 @@ TEST(CommandLine, OutputsGoThroughLinksAndIntoDevices)
   ASSERT_EQ(result.status, 0) << result.output;
   ASSERT_EQ(::stat("/dev/null", &st), 0);
   EXPECT_TRUE(S_ISCHR(st.st_mode));
+  // A device whose write fails fails the run before any file is renamed into place.
+  if(::stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode)) {
+    std::remove(o.c_str());
+    result = run("--source " + s + " --target " + t + " --output " + o + " --report /dev/full");
+    EXPECT_EQ(result.status, 1) << result.output;
+    EXPECT_NE(result.output.find("/dev/full: write error"), std::string::npos) << result.output;
+    EXPECT_FALSE(exists(o));
+    EXPECT_EQ(leftovers(o), 0u);
+  }
   // A link to nothing is refused before any work, and nothing is written.
   std::remove(o.c_str());
   std::remove(link.c_str());
@@ -776,6 +836,37 @@ TEST(CommandLine, TheToolsOwnStartHasTheSourcesOrientation)
   const Tool_run result = run("--source " + cw + " --output " + o + " --measure symmetric_dirichlet");
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_NE(result.output.find("inverted_cells  0"), std::string::npos) << result.output;
+  // A planar source that folds over itself: every start inverts its folded triangles. Refused,
+  // naming --untangle, which unfolds the start to match them.
+  IO::Triangle_soup folding = IO::read_triangle_soup(s);
+  folding.points[6 * 13 + 6][0] += 0.2;   // the middle vertex, past its right neighbour
+  IO::write_triangle_soup(temp("fold8.off"), folding);
+  Tool_run fold = run("--source " + temp("fold8.off") + " --output " + o);
+  EXPECT_EQ(fold.status, 1) << fold.output;
+  EXPECT_NE(fold.output.find("the planar source folds over itself ("), std::string::npos) << fold.output;
+  fold = run("--source " + temp("fold8.off") + " --output " + o + " --untangle");
+  ASSERT_EQ(fold.status, 0) << fold.output;
+  EXPECT_NE(fold.output.find("inverted_cells  0"), std::string::npos) << fold.output;
+  // Far from unit size (CGAL's parameterizer squares lengths): the same optimized energy, listed
+  // either way, and a valid map. (Not the same map to the bit: the start is parameterized on a copy,
+  // and the runs stop at the threshold.)
+  const std::string far = temp("far8.off"), report = temp("far8.json");
+  for(const std::string& name : {s, cw}) {
+    const Tool_run unit = run("--source " + name + " --output " + o + " --measure symmetric_dirichlet --report " + report);
+    ASSERT_EQ(unit.status, 0) << unit.output;
+    const double expected = json_value(slurp(report), "final_energy");
+    for(const int e : {300, -1000}) {
+      IO::Triangle_soup scaled = IO::read_triangle_soup(name);
+      for(auto& p : scaled.points)
+        for(double& x : p) x = std::ldexp(x, e);
+      IO::write_triangle_soup(far, scaled);
+      const Tool_run scaled_run = run("--source " + far + " --output " + o + " --measure symmetric_dirichlet --report " + report);
+      ASSERT_EQ(scaled_run.status, 0) << e << ": " << scaled_run.output;
+      const std::string json = slurp(report);
+      EXPECT_NEAR(json_value(json, "final_energy"), expected, 1e-3 * expected) << e;
+      EXPECT_EQ(json_value(json, "inverted_cells"), 0) << e;
+    }
+  }
 }
 
 namespace {
@@ -932,7 +1023,7 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   const std::string outside = temp("outside.off");
   write_octahedron(outside, 0.5, 0.8);   // reaches x = 1.3
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + outside + " --carry-output " + c, 1,
-                 "1 vertex is outside the volume: 0 (--snap moves such vertices onto its boundary)");
+                 "1 point is outside the volume (in no cell of the complex): 0 (--snap moves such points onto its boundary)");
   // The command line.
   expect_failure("--source " + cube + " --start sphere" + base, 2, "--start is ball or radial");
   expect_failure("--source " + cube + " --start ball --target " + cube + base, 2, "give one");

@@ -230,6 +230,9 @@ TEST(Medit, RejectsAMissingOrWrongHeader)
   EXPECT_REJECTED("MeshVersionFormatted 1\nDimension\n3.5\n", "bad.mesh:3: '3.5' is not an integer");
   EXPECT_REJECTED("MeshVersionFormatted 1\n" + four_vertices, "bad.mesh:2: section Vertices before Dimension");
   EXPECT_REJECTED(header + "Dimension 3\n", "bad.mesh:3: Dimension repeated");
+  // Other volume cells: the mesh would be read as its tetrahedra alone.
+  EXPECT_REJECTED(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nHexahedra 1\n1 2 3 4 1 2 3 4 0\n",
+                  "bad.mesh:10: 1 Hexahedra: only tetrahedral meshes are supported");
 }
 
 TEST(Medit, RejectsMissingSections)
@@ -269,7 +272,7 @@ TEST(Medit, RejectsBadCounts)
                   "bad.mesh:4: Vertices count 1000000000000 is more than the rest of the file can hold");
   EXPECT_REJECTED(header + four_vertices + "Tetrahedra 9223372036854775807\n1 2 3 4 0\n",
                   "bad.mesh:9: Tetrahedra count 9223372036854775807 is more than the rest of the file can hold");
-  EXPECT_REJECTED(header + four_vertices + "Tetrahedra 99999999999999999999\n", "bad.mesh:9: '99999999999999999999' is not an integer");
+  EXPECT_REJECTED(header + four_vertices + "Tetrahedra 99999999999999999999\n", "bad.mesh:9: integer '99999999999999999999' is out of range");
   EXPECT_REJECTED(header + four_vertices + "Triangles 3\n1 2 3 0\n1 2 4 0\n", "bad.mesh:9: Triangles count 3 is more than");
   // Exactly as many bytes as the entries need is fine.
   EXPECT_EQ(read(header + four_vertices + "Tetrahedra 1 1 2 3 4 0\nCorners 2\n1 2").cells.size(), 1u);
@@ -515,7 +518,17 @@ TEST(Svg, CrossSectionsCoverTheSectionAndPicturesCountTheirCells)
     EXPECT_THROW(IO::write_SVG(path, bad, "K"), DO::Invalid_input);
     EXPECT_FALSE(exists(path));
   }
-  EXPECT_THROW(IO::write_energy_plot_SVG(path, {1, std::numeric_limits<double>::infinity()}, "E"), DO::Invalid_input);
+  EXPECT_THROW(IO::write_energy_plot_SVG(path, {}, "E"), DO::Invalid_input);
+  EXPECT_FALSE(exists(path));
+  // Energies that are not finite (an inverted start, a run stopped before any evaluation) leave gaps.
+  const double inf = std::numeric_limits<double>::infinity();
+  IO::write_energy_plot_SVG(path, {inf, 2, 1.5, std::nan(""), 1.2}, "E");
+  EXPECT_EQ(occurrences(contents(path), "<polyline"), 2u);
+  EXPECT_NE(contents(path).find(">2 of 5 energies not finite, not drawn</text>"), std::string::npos);
+  EXPECT_TRUE(tags_nest(contents(path)));
+  IO::write_energy_plot_SVG(path, {inf}, "E");
+  EXPECT_EQ(occurrences(contents(path), "<polyline"), 0u);
+  EXPECT_TRUE(tags_nest(contents(path)));
   IO::write_energy_plot_SVG(path, {3, 2, 1.5}, "E <&> \"units\"");
   EXPECT_NE(contents(path).find("<polyline"), std::string::npos);
   EXPECT_TRUE(tags_nest(contents(path)));
@@ -804,6 +817,8 @@ TEST(Readers, RejectTrailingGarbage)
   EXPECT_READER_REJECTED("obj", "v 0 0 0 1 junk\n", "bad.obj:1: 'junk' is not a number");
   EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n", "bad.obj:4: 'x' is not an integer");
   EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "bad.obj:4: face vertex '1/1/1/1' has more than three parts");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//99 3//1\n", "bad.obj:5: face 0 has normal index 2//99 out of range");
+  EXPECT_READER_REJECTED("obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//0 2 3\n", "bad.obj:4: face vertex '1//0' has normal index 0 (OBJ counts from 1)");
   EXPECT_READER_REJECTED("mesh", tetrahedron_mesh + "garbage\n", "bad.mesh:11: 'garbage' after End");
   EXPECT_READER_REJECTED("mesh", header + four_vertices + "Tetrahedra 1 1 2 3 4 0\ngarbage\n",
                          "bad.mesh:10: unsupported Medit section 'garbage'");
@@ -966,6 +981,30 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   EXPECT_EQ(message("nan.ply", binary), ": vertex 0 has a non-finite coordinate");
   EXPECT_EQ(message("nan_text.ply", header + "0 0 nan\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"), ": CGAL's PLY reader could not read the file");
   EXPECT_EQ(message("ok.ply", header + points + "3 0 1 2\n"), "no error");
+  EXPECT_EQ(message("negative.ply", header + points + "3 0 1 -1\n"), ": face 0 has vertex index -1 out of range");
+  // What CGAL's readers ignore: lines after the elements a header announces, or after the last END.
+  EXPECT_EQ(message("more.ply", header + points + "3 0 1 2\n3 0 2 3\n"), ":15: content after the 5 elements the header announces");
+  EXPECT_EQ(message("trailing.ply", header + points + "3 0 1 2\n\nthis is garbage\n"),
+            ":16: content after the 5 elements the header announces");
+  EXPECT_EQ(message("blank.ply", header + points + "3 0 1 2\n\n  \n"), "no error");
+  const std::string ts = "GOCAD TSurf 1\nHEADER {\nname:t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n";
+  EXPECT_EQ(message("ok.ts", ts), "no error");
+  EXPECT_EQ(message("garbage.ts", ts + "garbage here\n"), ":11: content after the last surface's END");
+  std::string crlf;
+  for(char c : ts) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_EQ(message("crlf.ts", crlf), "no error");   // Windows line ends
+  // A NaN corner of an STL file would be merged with any other (it compares equal to every point).
+  const float corner_values[12] = {0, 0, 1, 0, 0, 0, 1, 0, std::numeric_limits<float>::quiet_NaN(), 0, 1, 0};
+  std::string nan_stl(80, ' ');
+  const std::uint32_t one = 1;
+  const std::uint16_t attributes = 0;
+  nan_stl.append(reinterpret_cast<const char*>(&one), sizeof one);
+  nan_stl.append(reinterpret_cast<const char*>(corner_values), sizeof corner_values);
+  nan_stl.append(reinterpret_cast<const char*>(&attributes), sizeof attributes);
+  EXPECT_EQ(message("nan.stl", nan_stl), ": facet 0 has a non-finite coordinate");
+  EXPECT_EQ(message("nan_text.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 nan\nvertex 0 1 0\n"
+                                    "endloop\nendfacet\nendsolid s\n"),
+            ": facet 0 has a non-finite coordinate 'nan'");
   EXPECT_EQ(message("garbage.stl", "this is not an STL file\n").substr(0, 1), ":");
   EXPECT_EQ(message("empty.ts", ""), ": CGAL's TS reader could not read the file");
   EXPECT_EQ(message("x.vtp", "whatever"), ": unsupported extension (use .off, .obj, .ply, .stl or .ts)");

@@ -852,7 +852,7 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
   try {
     DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(1, 0, 0));
     ADD_FAILURE() << "a torus was mapped onto the ball";
-  } catch(const DO::Invalid_input& e) {
+  } catch(const DO::Domain_not_star_shaped& e) {
     EXPECT_NE(std::string(e.what()).find("not star-shaped about the centre: the boundary facet of cell"), std::string::npos)
       << e.what();
   }
@@ -861,13 +861,16 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
   try {
     DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0, 0, 0));
     ADD_FAILURE() << "a centre outside the domain was accepted";
-  } catch(const DO::Invalid_input& e) {
+  } catch(const DO::Center_outside_domain& e) {
     EXPECT_NE(std::string(e.what()).find("not strictly inside"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(ball.empty());
 
   const C3t3 sphere = mesh_sphere(0.4);
   Target_storage radial_start;
+  // About a point outside the sphere the radial map is refused, its target untouched.
+  EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), Point_3(2, 0, 0)), DO::Center_outside_domain);
+  EXPECT_TRUE(radial_start.empty());
   DO::radial_map(sphere, Target_map(radial_start), Point_3(0, 0, 0));
   for(const auto& [v, q] : radial_start)
     EXPECT_EQ(q, radial(v->point().point()));

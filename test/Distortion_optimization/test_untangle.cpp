@@ -155,6 +155,11 @@ TEST(Untangle, NoInjectiveMapGivesAnErrorAndLeavesTheMapUnchanged)
       ADD_FAILURE() << "no injective map exists, yet untangle() returned";
     } catch(const DO::Invalid_input& e) {
       const std::string what = e.what();
+      const auto* unmovable = dynamic_cast<const DO::Unmovable_inverted_cell*>(&e);
+      EXPECT_EQ(unmovable != nullptr, g != &outside) << what;
+      if(unmovable) {
+        EXPECT_EQ(unmovable->cell(), 100u);
+      }
       if(g == &outside) {
         EXPECT_NE(what.find("untangling failed"), std::string::npos) << what;
         EXPECT_NE(what.find(" remain"), std::string::npos) << what;

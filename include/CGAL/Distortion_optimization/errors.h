@@ -4,6 +4,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_ERRORS_H
 #define CGAL_DISTORTION_OPTIMIZATION_ERRORS_H
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -30,6 +31,40 @@ class Crossing_start_boundary : public Invalid_input
 {
 public:
   explicit Crossing_start_boundary(const std::string& what) : Invalid_input(what) {}
+};
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The `Invalid_input` thrown by `radial_map()` and `star_shaped_to_unit_ball()` when their centre
+/// is not strictly inside the domain (exact predicates).
+class Center_outside_domain : public Invalid_input
+{
+public:
+  explicit Center_outside_domain(const std::string& what) : Invalid_input(what) {}
+};
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The `Invalid_input` thrown by `star_shaped_to_unit_ball()` when a boundary facet of the domain
+/// faces its centre: the domain is not star-shaped about it.
+class Domain_not_star_shaped : public Invalid_input
+{
+public:
+  explicit Domain_not_star_shaped(const std::string& what) : Invalid_input(what) {}
+};
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The `Invalid_input` thrown by untangling (`untangle()`, or `minimize_distortion()` with
+/// `untangle_first`) when an inverted or flat cell has only constrained vertices: no map with
+/// these constraints is injective. `cell()` is its index among the cells of the input.
+class Unmovable_inverted_cell : public Invalid_input
+{
+public:
+  Unmovable_inverted_cell(const std::string& what, std::size_t cell) : Invalid_input(what), cell_(cell) {}
+
+  /// The index of the cell (in the order of the mesh's cells, as in the message).
+  std::size_t cell() const { return cell_; }
+
+private:
+  std::size_t cell_;
 };
 
 } // namespace Distortion_optimization

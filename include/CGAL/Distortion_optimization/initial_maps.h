@@ -11,17 +11,24 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Distortion_optimization {
@@ -62,7 +69,8 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
 /// disk `tm` (a `FaceListGraph` of triangles with one border): the longest border is mapped to a
 /// circle or a square by arc length, the inner vertices by `kind`; then the map is scaled about
 /// the origin so that its area is the surface's (isometric measures compare lengths, and CGAL's
-/// parameterizers map to the unit square whatever the surface's size).
+/// parameterizers map to the unit square whatever the surface's size). Coordinates of any magnitude
+/// are accepted: a mesh far from unit size is parameterized scaled by a power of two.
 /// \throws Invalid_input if `tm` is empty, has no border, or CGAL's parameterizer fails (e.g. the
 /// mesh is not a topological disk).
 template <class TriangleMesh, class UVMap>
@@ -70,6 +78,31 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind
                               Border_shape border = Border_shape::CIRCLE)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
+  using Point_3 = typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+  using Point_2 = typename boost::property_traits<UVMap>::value_type;
+  // CGAL's parameterizers square lengths, and the area below squares areas: far from unit size
+  // (an extent beyond 2^+-64) they overflow or underflow. Such a mesh is parameterized as a copy scaled by
+  // a power of two, exactly, and the map scaled back.
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
+  const double extent = (std::max)({box.x_span(), box.y_span(), box.z_span()});
+  const int exponent = extent > 0 && std::isfinite(extent) ? std::ilogb(extent) : 0;
+  if(std::abs(exponent) > 64) {
+    CGAL::Surface_mesh<Point_3> copy;
+    std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
+                          typename CGAL::Surface_mesh<Point_3>::Vertex_index>> copied;
+    CGAL::copy_face_graph(tm, copy, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(copied)));
+    for(auto v : copy.vertices()) {
+      const Point_3& p = copy.point(v);
+      copy.point(v) = Point_3(std::scalbn(CGAL::to_double(p.x()), -exponent), std::scalbn(CGAL::to_double(p.y()), -exponent),
+                              std::scalbn(CGAL::to_double(p.z()), -exponent));
+    }
+    auto copy_uv = copy.template add_property_map<typename CGAL::Surface_mesh<Point_3>::Vertex_index, Point_2>("v:uv").first;
+    initial_parameterization(copy, copy_uv, kind, border);
+    for(const auto& [v, w] : copied)
+      put(uv, v, Point_2(std::scalbn(CGAL::to_double(copy_uv[w].x()), exponent), std::scalbn(CGAL::to_double(copy_uv[w].y()), exponent)));
+    return;
+  }
   using Circle = SMP::Circular_border_arc_length_parameterizer_3<TriangleMesh>;
   using Square = SMP::Square_border_arc_length_parameterizer_3<TriangleMesh>;
   auto run = [&](auto border_parameterizer) {
@@ -92,7 +125,6 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind
   }
   if(!(uv_area > 0) || !(surface_area > 0)) throw Invalid_input("the parameterization has no area");
   const double s = std::sqrt(surface_area / uv_area);
-  using Point_2 = typename boost::property_traits<UVMap>::value_type;
   for(auto v : vertices(tm)) {
     const Point_2 p = get(uv, v);
     put(uv, v, Point_2(s * CGAL::to_double(p.x()), s * CGAL::to_double(p.y())));

@@ -174,7 +174,8 @@ public:
     if(terms_.empty()) throw Invalid_input("a sum of measures has no term");
     for(const Term& t : terms_)
       if(!(t.weight > 0) || !std::isfinite(t.weight))
-        throw Invalid_input("the weight of '" + t.product.name() + "' is not a positive number");
+        throw Invalid_input("the weight of '" + t.product.name() + "' is not a positive finite number" +
+                            (std::isinf(t.weight) ? " (the product of its factors' weights overflows)" : ""));
   }
 
   std::string name() const

@@ -21,6 +21,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -271,18 +272,11 @@ struct Checked_surface
     // The volume, as tetrahedra from the centre of the bounding box in units of its largest extent:
     // PMP::volume() sums them from the origin, where far from it rounding swamps the volume (a unit
     // sphere centred at (10^9, 10^9, 10^9) measured no volume at all).
-    std::array<double, 3> low, high;
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
-    for(const Point_3& p : points)
-      for(int k = 0; k < 3; ++k) {
-        low[k] = (std::min)(low[k], CGAL::to_double(p[k]));
-        high[k] = (std::max)(high[k], CGAL::to_double(p[k]));
-      }
-    const double extent = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+    const Bbox_3 box = bbox_3(points.begin(), points.end());
+    const double extent = (std::max)({box.x_span(), box.y_span(), box.z_span()});
     const auto unit = [&](std::size_t i) {
       std::array<double, 3> u;
-      for(int k = 0; k < 3; ++k) u[k] = (CGAL::to_double(points[i][k]) - (low[k] + high[k]) / 2) / extent;
+      for(int k = 0; k < 3; ++k) u[k] = (CGAL::to_double(points[i][k]) - (box.min_coord(k) + box.max_coord(k)) / 2) / extent;
       return u;
     };
     double unit_volume = 0;

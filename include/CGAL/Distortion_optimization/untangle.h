@@ -146,9 +146,11 @@ a measure from the untangled map.
 
 \throws Distortion_optimization::Invalid_input, leaving `target` unchanged, for the input
 `CGAL::compute_distortion()` rejects, non-positive or non-finite vertex weights, a negative number
-of threads, an inverted cell whose vertices are all constrained, and when inverted cells remain
-after the rounds when Tutte's embedding does not apply (the constraints may admit no injective map:
-e.g. a fixed boundary that crosses itself); the message gives the number of cells still inverted.
+of threads, and when inverted cells remain after the rounds when Tutte's embedding does not apply
+(the constraints may admit no injective map: e.g. a fixed boundary that crosses itself); the
+message gives the number of cells still inverted.
+\throws Distortion_optimization::Unmovable_inverted_cell (an `Invalid_input`) for an inverted
+cell whose vertices are all constrained, before any round.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
 `preserve_global_injectivity` when the boundary of the start map crosses itself.
 */

@@ -104,15 +104,15 @@ internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
 /// `(p - center) |p - center|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the
 /// unit sphere and shrinks the inside). Injective on any domain, but with a conformal distortion
 /// that grows without bound towards the centre: a hard start for the optimizer.
-/// \throws Invalid_input if `center` is not strictly inside the domain (exact predicates), as for
-/// `star_shaped_to_unit_ball()`: about a point outside, the map is no longer the one that shrinks
-/// the domain onto its centre. `target` is then unchanged.
+/// \throws Center_outside_domain (an `Invalid_input`) if `center` is not strictly inside the
+/// domain (exact predicates), as for `star_shaped_to_unit_ball()`: about a point outside, the map
+/// is no longer the one that shrinks the domain onto its centre. `target` is then unchanged.
 template <class C3T3, class TargetMap>
 void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
 {
   using Point_3 = internal::C3t3_point<C3T3>;
   if(!internal::is_strictly_inside(c3t3, center))
-    throw Invalid_input("the centre of the radial map is not strictly inside the domain");
+    throw Center_outside_domain("the centre of the radial map is not strictly inside the domain");
   map_vertices(c3t3, target, [&](const Point_3& p) {
     const auto u = p - center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
@@ -134,10 +134,11 @@ void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C
 /// edge is rounded onto the sphere). Their number is returned; `CGAL::minimize_distortion()` with
 /// `Distortion_optimization::parameters::untangle_first(true)` repairs them.
 /// \returns the number of cells of the complex the map inverts or flattens (exact predicate)
-/// \throws Invalid_input if `center` is not strictly inside the domain, or the domain is not
-/// star-shaped about it (the message names the first boundary facet that faces `center`; another
-/// centre, or untangling a map built otherwise, e.g. the radial map, are the remedies). `target`
-/// is then unchanged.
+/// \throws Center_outside_domain (an `Invalid_input`) if `center` is not strictly inside the
+/// domain, or Domain_not_star_shaped (an `Invalid_input`) if the domain is not star-shaped about
+/// it (the message names the first boundary facet that faces `center`; another centre, or
+/// untangling a map built otherwise, e.g. the radial map, are the remedies). `target` is then
+/// unchanged.
 template <class C3T3, class TargetMap>
 std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
 {
@@ -149,7 +150,7 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
   const auto& tr = c3t3.triangulation();
   auto point = tr.geom_traits().construct_point_3_object();
   if(!internal::is_strictly_inside(c3t3, center))
-    throw Invalid_input("the centre of the ball map is not strictly inside the domain");
+    throw Center_outside_domain("the centre of the ball map is not strictly inside the domain");
   std::vector<Triangle> boundary;
   std::size_t index = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++index)
@@ -158,7 +159,7 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
         const Point_3 a = point(tr.point(c, (i + 1) % 4)), b = point(tr.point(c, (i + 2) % 4)), d = point(tr.point(c, (i + 3) % 4));
         // Star-shaped about the centre: it sees every boundary facet from the cell's side.
         if(CGAL::orientation(a, b, d, center) != CGAL::orientation(a, b, d, Point_3(point(tr.point(c, i)))))
-          throw Invalid_input("the domain is not star-shaped about the centre: the boundary facet of cell " +
+          throw Domain_not_star_shaped("the domain is not star-shaped about the centre: the boundary facet of cell " +
                               std::to_string(index) + " of the complex faces it; choose another centre, or start "
                               "from another map (e.g. radial_map()) and untangle it (untangle())");
         boundary.emplace_back(a, b, d);

@@ -66,26 +66,30 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(snap_to_volume_t, snap_to_volum
 /// \ingroup PkgDistortionOptimizationRef
 /// The `Invalid_input` thrown by `embed_in_volume()` when points lie in no cell of the complex
 /// (and `snap_to_volume` is not set): `indices()` lists them all, in increasing order; the message
-/// gives their number and the first few.
+/// is `listing()` followed by the remedy.
 class Points_outside_volume : public Invalid_input
 {
 public:
   explicit Points_outside_volume(std::vector<std::size_t> indices)
-    : Invalid_input(message(indices)), indices_(std::make_shared<const std::vector<std::size_t>>(std::move(indices)))
+    : Invalid_input(listing(indices) + "; Distortion_optimization::parameters::snap_to_volume(true) snaps them to its boundary"),
+      indices_(std::make_shared<const std::vector<std::size_t>>(std::move(indices)))
   {}
 
   /// The indices (in the input range) of the points outside the volume.
   const std::vector<std::size_t>& indices() const { return *indices_; }
 
+  /// Their number and the first ten, as in the message, without its remedy (for a caller that
+  /// words its own, such as a tool's option).
+  std::string listing() const { return listing(*indices_); }
+
 private:
-  static std::string message(const std::vector<std::size_t>& indices)
+  static std::string listing(const std::vector<std::size_t>& indices)
   {
     std::string m = std::to_string(indices.size()) + (indices.size() == 1 ? " point is" : " points are") +
                     " outside the volume (in no cell of the complex): ";
     const std::size_t shown = std::min<std::size_t>(indices.size(), 10);
     for(std::size_t k = 0; k < shown; ++k) m += (k ? ", " : "") + std::to_string(indices[k]);
-    if(shown < indices.size()) m += ", ...";
-    return m + "; Distortion_optimization::parameters::snap_to_volume(true) snaps them to its boundary";
+    return shown < indices.size() ? m + ", ..." : m;
   }
 
   // Shared, so that copying the exception (as throwing may) cannot throw.

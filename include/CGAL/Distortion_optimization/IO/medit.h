@@ -22,6 +22,7 @@
 #include <cmath>
 #include <fstream>
 #include <istream>
+#include <iterator>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -224,6 +225,10 @@ private:
   void skip(const Medit_section& section)
   {
     const long long n = count(section.name, section.values_per_entry);
+    // Other volume cells would be dropped, and the mesh read as a part of itself.
+    const std::string volume_cells[] = {"Prisms", "Pentahedra", "Pyramids", "Hexahedra"};
+    if(n > 0 && std::find(std::begin(volume_cells), std::end(volume_cells), section.name) != std::end(volume_cells))
+      tokens_.fail(std::to_string(n) + " " + section.name + ": only tetrahedral meshes are supported");
     for(long long e = 0; e < n; ++e)
       for(int i = 0; i < section.values_per_entry; ++i) check_number(section.name, value(section.name, n, e));
   }
@@ -239,12 +244,12 @@ private:
 /// then n entries "x y z ref", "Tetrahedra" n then n entries "a b c d ref" (1-based), and an
 /// optional "End". Keywords are case-insensitive, '#' starts a comment, values may be spread
 /// over lines in any way, and a UTF-8 byte order mark at the start is skipped. The other
-/// sections of the format with a fixed layout (Edges, Triangles, Quadrilaterals, Prisms,
-/// Pyramids, Hexahedra, Corners, Ridges, Required*, Normals, Tangents, NormalAt*, TangentAt*,
-/// EdgesP2, TrianglesP2, QuadrilateralsQ2, AngleOfCornerBound) are checked and skipped. `name` is
-/// used in error messages.
+/// sections of the format with a fixed layout (Edges, Triangles, Quadrilaterals, Corners, Ridges,
+/// Required*, Normals, Tangents, NormalAt*, TangentAt*, EdgesP2, TrianglesP2, QuadrilateralsQ2,
+/// AngleOfCornerBound, and empty Prisms, Pyramids or Hexahedra) are checked and skipped. `name`
+/// is used in error messages.
 /// \throws Invalid_input naming the line for: a missing header, a dimension other than 3, a missing
-/// Vertices or Tetrahedra section, a section the reader does not know, a negative count, a count
+/// Vertices or Tetrahedra section, volume cells other than tetrahedra, a section the reader does not know, a negative count, a count
 /// larger than the rest of the file can hold, a line longer than 1 MiB, a truncated section, a
 /// token that is not a number (a NUL byte or other garbage in it included), a non-finite
 /// coordinate, a vertex index out of range, a tetrahedron repeating a vertex, or anything after

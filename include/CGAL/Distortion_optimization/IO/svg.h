@@ -256,16 +256,20 @@ inline void write_SVG(const std::string& path, const std::vector<Svg_panel>& pan
 /// Writes an energy-per-iteration plot (e.g. `Result::energy_per_iteration`, with the start's
 /// energy first) as an SVG line chart: iterations on x, energy on y from the smallest value to the
 /// largest (on a log scale when they are positive and span a factor of ten or more), five
-/// labelled ticks on each axis.
-/// \throws Invalid_input (before anything is written) if `energies` is empty or has a value that
-/// is not finite; or if the file cannot be written.
+/// labelled ticks on each axis. Values that are not finite (a start with inverted cells under a
+/// measure infinite there, a run stopped before its energy was evaluated) are left out of the line
+/// and counted in a note under it.
+/// \throws Invalid_input (before anything is written) if `energies` is empty; or if the file
+/// cannot be written.
 inline void write_energy_plot_SVG(const std::string& path, const std::vector<double>& energies, const std::string& name)
 {
   if(energies.empty()) throw Invalid_input(path + ": no energy to plot");
-  for(std::size_t i = 0; i < energies.size(); ++i)
-    if(!std::isfinite(energies[i])) throw Invalid_input(path + ": energy " + std::to_string(i) + " is not finite");
-  const double lo = *std::min_element(energies.begin(), energies.end()),
-               hi = *std::max_element(energies.begin(), energies.end());
+  std::vector<double> finite;
+  for(double e : energies)
+    if(std::isfinite(e)) finite.push_back(e);
+  const std::size_t left_out = energies.size() - finite.size();
+  const double lo = finite.empty() ? 0 : *std::min_element(finite.begin(), finite.end()),
+               hi = finite.empty() ? 1 : *std::max_element(finite.begin(), finite.end());
   const bool log_scale = lo > 0 && hi >= 10 * lo;
   const auto f = [&](double e) { return log_scale ? std::log(e) : e; };
   const double n = std::max<double>(1, energies.size() - 1), range = hi > lo ? f(hi) - f(lo) : 1;
@@ -273,7 +277,7 @@ inline void write_energy_plot_SVG(const std::string& path, const std::vector<dou
   const auto x = [&](double i) { return left + w * i / n; };
   const auto y = [&](double e) { return top + h * (1 - (f(e) - f(lo)) / range); };
   write_file_atomically(path, [&](std::ostream& out) {
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << left + w + 30 << "\" height=\"" << top + h + 60
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << left + w + 30 << "\" height=\"" << top + h + 80
         << "\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << left + w / 2 << "\" y=\"18\" text-anchor=\"middle\">" << internal::xml_escaped(name) << "</text>\n"
         << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << w << "\" height=\"" << h << "\" fill=\"none\" stroke=\"#333\"/>\n";
@@ -283,14 +287,25 @@ inline void write_energy_plot_SVG(const std::string& path, const std::vector<dou
           << "<text x=\"" << x(i) << "\" y=\"" << top + h + 18 << "\" text-anchor=\"middle\">" << internal::label(std::round(i)) << "</text>\n";
     }
     out << "<text x=\"" << left + w / 2 << "\" y=\"" << top + h + 42 << "\" text-anchor=\"middle\">iteration"
-        << (log_scale ? " (energy on a log scale)" : "") << "</text>\n"
-        << "<polyline fill=\"none\" stroke=\"" << internal::rgb(internal::viridis(0.25)) << "\" stroke-width=\"2\" points=\"";
+        << (log_scale ? " (energy on a log scale)" : "") << "</text>\n";
+    if(left_out > 0)
+      out << "<text x=\"" << left + w / 2 << "\" y=\"" << top + h + 62 << "\" text-anchor=\"middle\">" << left_out << " of "
+          << energies.size() << " energies not finite, not drawn</text>\n";
+    // One polyline per run of finite values: a gap where an energy is not finite.
     char buffer[64];
-    for(std::size_t i = 0; i < energies.size(); ++i) {
-      std::snprintf(buffer, sizeof buffer, "%.2f,%.2f ", x(double(i)), y(energies[i]));
-      out << buffer;
+    for(std::size_t i = 0; i < energies.size();) {
+      if(!std::isfinite(energies[i])) {
+        ++i;
+        continue;
+      }
+      out << "<polyline fill=\"none\" stroke=\"" << internal::rgb(internal::viridis(0.25)) << "\" stroke-width=\"2\" points=\"";
+      for(; i < energies.size() && std::isfinite(energies[i]); ++i) {
+        std::snprintf(buffer, sizeof buffer, "%.2f,%.2f ", x(double(i)), y(energies[i]));
+        out << buffer;
+      }
+      out << "\"/>\n";
     }
-    out << "\"/>\n</svg>\n";
+    out << "</svg>\n";
   });
 }
 

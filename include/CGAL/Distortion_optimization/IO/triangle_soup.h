@@ -24,8 +24,10 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <istream>
@@ -59,22 +61,21 @@ inline bool is_obj_statement(const std::string& keyword)
   return std::find(std::begin(statements), std::end(statements), keyword) != std::end(statements);
 }
 
-// The vertex and texture indices of an OBJ face reference "i", "i/t", "i//n" or "i/t/n" (as
-// written, 0 for no texture; the normal index is checked to be an integer, not kept).
-inline std::array<long long, 2> obj_vertex_reference(const Line_reader& reader, const std::string& ref)
+// The vertex, texture and normal indices of an OBJ face reference "i", "i/t", "i//n" or "i/t/n"
+// (as written, 0 for none).
+inline std::array<long long, 3> obj_vertex_reference(const Line_reader& reader, const std::string& ref)
 {
   std::size_t begin = 0;
-  std::array<long long, 2> indices = {0, 0};
+  std::array<long long, 3> indices = {0, 0, 0};
   for(int part = 0; part < 3; ++part) {
     const std::size_t slash = ref.find('/', begin);
     const std::string value = ref.substr(begin, slash == std::string::npos ? std::string::npos : slash - begin);
     if(part == 0) indices[0] = reader.integer(value);
     else if(!value.empty() || slash == std::string::npos) {   // "i/" is malformed, "i//n" is not
       const long long index = reader.integer(value);
-      if(part == 1) {
-        if(index == 0) reader.fail("face vertex '" + ref + "' has texture index 0 (OBJ counts from 1)");
-        indices[1] = index;
-      }
+      if(index == 0)
+        reader.fail("face vertex '" + ref + "' has " + (part == 1 ? "texture" : "normal") + " index 0 (OBJ counts from 1)");
+      indices[part] = index;
     }
     if(slash == std::string::npos) return indices;
     begin = slash + 1;
@@ -161,8 +162,11 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
   internal::Line_reader reader(in, name);
   std::vector<std::string> t;
   Triangle_soup soup;
+  std::size_t normals = 0;   // checked in faces' references, not kept
   while(reader.next(t)) {
-    if(t[0] == "v") {
+    if(t[0] == "vn") {
+      ++normals;
+    } else if(t[0] == "v") {
       if(t.size() < 4) reader.fail("vertex with fewer than 3 coordinates");
       soup.points.push_back({reader.coordinate(t[1]), reader.coordinate(t[2]), reader.coordinate(t[3])});
       reader.check_numbers(t, 4);
@@ -177,7 +181,7 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
       std::array<std::size_t, 3> tri, tex = {none, none, none};
       bool textured = false;
       for(int i = 0; i < 3; ++i) {
-        const std::array<long long, 2> ref = internal::obj_vertex_reference(reader, t[1 + i]);
+        const std::array<long long, 3> ref = internal::obj_vertex_reference(reader, t[1 + i]);
         const long long index = internal::obj_index(ref[0], soup.points.size());
         if(index < 0) reader.fail("face " + std::to_string(f) + " has vertex index " + t[1 + i] + " out of range");
         tri[i] = static_cast<std::size_t>(index);
@@ -187,6 +191,8 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
           tex[i] = static_cast<std::size_t>(texture);
           textured = true;
         }
+        if(ref[2] != 0 && internal::obj_index(ref[2], normals) < 0)
+          reader.fail("face " + std::to_string(f) + " has normal index " + t[1 + i] + " out of range");
       }
       internal::check_triangle(reader, tri, f);
       soup.cells.push_back(tri);
@@ -233,6 +239,82 @@ inline std::vector<std::array<double, 2>> per_vertex_texture_coordinates(const T
 
 namespace internal {
 
+// The checks on a file's bytes that CGAL's PLY, STL and GOCAD readers do not make: content after
+// the elements an ASCII PLY header announces, or after a GOCAD file's last END (both ignored by
+// them), and non-finite STL coordinates (CGAL merges equal corners through comparisons, and a NaN
+// compares equal to every point). A GOCAD file's carriage returns are dropped: its reader takes
+// "END\r" for an unknown keyword.
+inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, const std::string& e)
+{
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for(std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  const auto blank = [](const std::string& line) {
+    return std::all_of(line.begin(), line.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; });
+  };
+  const auto after = [&](std::size_t line, const std::string& what) {
+    throw Invalid_input(shown + ":" + std::to_string(line + 1) + ": content after " + what);
+  };
+  if(e == "ts") {
+    bytes.erase(std::remove(bytes.begin(), bytes.end(), '\r'), bytes.end());
+    const std::vector<std::string> lines = split(bytes);
+    std::size_t last_end = lines.size();   // the line of the last surface's END (CGAL reads every surface)
+    for(std::size_t i = 0; i < lines.size(); ++i) {
+      std::string word;
+      if((std::istringstream(lines[i]) >> word) && word == "END") last_end = i;
+    }
+    for(std::size_t j = last_end + 1; j < lines.size(); ++j)
+      if(!blank(lines[j])) after(j, "the last surface's END");
+  } else if(e == "ply") {
+    const std::size_t header_end = bytes.find("end_header");
+    if(bytes.compare(0, 3, "ply") != 0 || header_end == std::string::npos) return;   // CGAL's reader tells
+    bool ascii = false;
+    std::size_t elements = 0;
+    for(const std::string& line : split(bytes.substr(0, header_end))) {
+      std::istringstream words(line);
+      std::string word, name;
+      unsigned long long count = 0;
+      words >> word;
+      if(word == "format") ascii = (words >> name) && name == "ascii";
+      if(word == "element" && (words >> name >> count)) elements += static_cast<std::size_t>(count);
+    }
+    if(!ascii) return;
+    const std::vector<std::string> lines = split(bytes);
+    std::size_t i = 0, seen = 0;
+    while(i < lines.size() && lines[i].compare(0, 10, "end_header") != 0) ++i;
+    for(++i; i < lines.size(); ++i)
+      if(!blank(lines[i]) && ++seen > elements) after(i, "the " + std::to_string(elements) + " elements the header announces");
+  } else if(e == "stl") {
+    const auto word = [&](std::size_t at) {   // little-endian, as STL stores it
+      std::uint32_t w = 0;
+      for(std::size_t k = 4; k-- > 0;) w = (w << 8) | static_cast<unsigned char>(bytes[at + k]);
+      return w;
+    };
+    if(bytes.size() >= 84 && bytes.size() == 84 + 50 * std::size_t(word(80))) {   // binary
+      for(std::size_t f = 0; 84 + 50 * f < bytes.size(); ++f)
+        for(std::size_t k = 0; k < 9; ++k) {   // after the normal's three floats
+          const std::uint32_t w = word(84 + 50 * f + 12 + 4 * k);
+          float x;
+          std::memcpy(&x, &w, sizeof x);
+          if(!std::isfinite(x)) throw Invalid_input(shown + ": facet " + std::to_string(f) + " has a non-finite coordinate");
+        }
+      return;
+    }
+    std::istringstream words(bytes);
+    std::size_t facet = 0;
+    for(std::string w; words >> w;) {
+      if(w == "endfacet") ++facet;
+      if(w != "vertex") continue;
+      for(int k = 0; k < 3 && (words >> w); ++k)
+        if(!std::isfinite(std::strtod(w.c_str(), nullptr)))
+          throw Invalid_input(shown + ": facet " + std::to_string(facet) + " has a non-finite coordinate '" + w + "'");
+    }
+  }
+}
+
 // PLY, STL and GOCAD through CGAL's polygon soup readers, which keep the file's vertex and face
 // order (read_polygon_mesh may repair and reorder, and source/target pairs are matched by index),
 // then the checks the package's own readers make as they parse.
@@ -244,9 +326,22 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
   const std::string shown = printable(path);
   bool ok = false;
   try {
-    ok = e == "ply" ? CGAL::IO::read_PLY(path, points, faces)
-       : e == "stl" ? CGAL::IO::read_STL(path, points, faces)
-                    : CGAL::IO::read_GOCAD(path, points, faces);
+    std::string bytes;
+    {
+      std::ifstream in(path, std::ios::binary);
+      bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      if(in.bad()) throw Invalid_input(shown + ": cannot read the file");
+    }
+    check_bytes_for_CGAL(bytes, shown, e);
+    if(e == "ts") {
+      std::istringstream in(bytes);
+      CGAL::IO::set_mode(in, CGAL::IO::ASCII);
+      ok = CGAL::IO::read_GOCAD(in, points, faces);
+    } else {
+      ok = e == "ply" ? CGAL::IO::read_PLY(path, points, faces) : CGAL::IO::read_STL(path, points, faces);
+    }
+  } catch(const Invalid_input&) {
+    throw;
   } catch(const std::exception& x) {
     throw Invalid_input(shown + ": " + x.what());
   }
@@ -265,8 +360,9 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
     if(face.size() != 3)
       throw Invalid_input(shown + ": face " + std::to_string(f) + " is not a triangle (" + std::to_string(face.size()) + " vertices)");
     for(std::size_t i : face)
-      if(i >= points.size())
-        throw Invalid_input(shown + ": face " + std::to_string(f) + " has vertex index " + std::to_string(i) + " out of range");
+      if(i >= points.size())   // (a negative index in the file comes as a huge unsigned one)
+        throw Invalid_input(shown + ": face " + std::to_string(f) + " has vertex index " +
+                            std::to_string(static_cast<long long>(i)) + " out of range");
     if(face[0] == face[1] || face[1] == face[2] || face[0] == face[2])
       throw Invalid_input(shown + ": face " + std::to_string(f) + " repeats a vertex");
     soup.cells.push_back({face[0], face[1], face[2]});

@@ -65,7 +65,7 @@ inline std::vector<double> read_vertex_weights(std::istream& in, std::size_t cou
   while(reader.next(t)) {
     if(t.size() > 1) reader.fail("one weight per line");
     if(weights.size() == count) reader.fail("more weights than the " + std::to_string(count) + " vertices");
-    const double w = reader.coordinate(t[0]);
+    const double w = reader.coordinate(t[0], "weight");
     if(!(w > 0)) reader.fail("weight " + t[0] + " is not positive");
     weights.push_back(w);
   }

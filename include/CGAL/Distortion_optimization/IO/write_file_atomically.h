@@ -107,6 +107,7 @@ public:
     std::string name = folder + "." + base + ".XXXXXX" + suffix;
     const int fd = ::mkstemps(&name[0], static_cast<int>(suffix.size()));
     if(fd < 0) throw Invalid_input(path + ": cannot write (does the folder exist, and is it writable?)");
+    streamed_ = special;
     // mkstemp makes the file private (0600); give it the mode a new file of the user would have.
     const mode_t mask = ::umask(0);
     ::umask(mask);
@@ -124,6 +125,9 @@ public:
   }
 
   const std::string& path() const { return path_; }
+  /// Whether the bytes go into a device or a pipe at `rename_to()` (a write that may fail, such as
+  /// `/dev/full`) rather than by renaming the file.
+  bool is_streamed() const { return streamed_; }
   /// Renames the file to `target` (the file a symbolic link names; into a device or a pipe, its
   /// bytes are written), after which it is no longer temporary.
   /// \throws Invalid_input if the rename or the write fails (the temporary file is then removed).
@@ -167,7 +171,7 @@ private:
 
   std::string path_;
   int slot_ = -1;
-  bool kept_ = false;
+  bool kept_ = false, streamed_ = false;
 };
 
 /// \ingroup PkgDistortionOptimizationIO

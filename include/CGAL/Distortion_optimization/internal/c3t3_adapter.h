@@ -161,6 +161,9 @@ public:
       throw Invalid_input("the complex has no cell");
     for(const Vector<3>& y : map.target) largest = std::max(largest, y.cwiseAbs().maxCoeff());
     scale = coordinate_scale(largest);
+    double source_size = 0;   // the largest source edge: a cell's size, near enough the mesh's for the test
+    for(const auto& cell : cells) source_size = std::max(source_size, cell.second.cwiseAbs().maxCoeff());
+    check_comparable_sizes(source_size, largest_extent(map.target));
     for(Vector<3>& y : map.target) y *= scale;
     for(const auto& [cell, Dm] : cells) map.add_cell(cell, scale * Dm, +1);
   }

@@ -15,9 +15,11 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -173,6 +175,13 @@ Optimization_problem<Adapter::dimension> make_problem(Adapter& adapter, const Na
 {
   Optimization_problem<Adapter::dimension> problem;
   problem.omega = read_vertex_weights(adapter, np);
+  // The energy is a mean, unchanged when every weight is scaled: the weights are scaled by a power
+  // of two (exactly) so that the largest is in [1, 2), and their sums cannot overflow however large
+  // they are. (A weight below 2^-1022 of the largest counts as that: it would underflow to 0.)
+  if(!problem.omega.empty()) {
+    const int exponent = std::ilogb(*std::max_element(problem.omega.begin(), problem.omega.end()));
+    for(double& x : problem.omega) x = (std::max)(std::scalbn(x, -exponent), std::numeric_limits<double>::min());
+  }
   problem.is_free = read_free_vertices(adapter, np);
   read_sliding_boundary(adapter, np, problem);
   problem.map = std::move(adapter.map);

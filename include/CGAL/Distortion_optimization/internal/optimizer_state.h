@@ -68,7 +68,12 @@ public:
     });
     for(std::size_t c = 0; c < value_.size(); ++c) {
       if(std::isnan(value_[c]))
-        throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number");
+        throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number (its singular values "
+                            "overflow or underflow: is the target's size far from the source's?)");
+      if(!std::isfinite(value_[c]) && valid_[c])   // (exact predicates) the value overflows
+        throw Invalid_input("the distortion of cell " + std::to_string(c) + " of the start map under '" + measure_.name() +
+                            "' exceeds the largest double, though the cell is not inverted: it is nearly flat, or "
+                            "the measure's weights are too large");
       if(!std::isfinite(value_[c]))
         throw Invalid_input("cell " + std::to_string(c) + " of the start map is inverted or degenerate, and the "
                             "measure '" + measure_.name() + "' is infinite there: untangle the map first");

@@ -8,6 +8,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 
+#include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 
 #include <Eigen/LU>
@@ -16,6 +17,8 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -31,6 +34,31 @@ inline double coordinate_scale(double largest)
   if(largest > 0 && std::isfinite(largest) && !(largest > 0x1p-60 && largest < 0x1p60))
     return std::ldexp(1., -std::ilogb(largest));
   return 1.;
+}
+
+// The largest extent of the bounding box of `points` (0 for none).
+template <class Point>
+double largest_extent(const std::vector<Point>& points)
+{
+  if(points.empty()) return 0;
+  Point low = points[0], high = points[0];
+  for(const Point& p : points) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return (high - low).maxCoeff();
+}
+
+// Throws unless the source and the target are of sizes within 2^256 of each other: the kernels
+// form products of up to 2n singular values, which overflow or underflow beyond (whatever the
+// common scale of coordinate_scale()).
+inline void check_comparable_sizes(double source_size, double target_size)
+{
+  if(source_size > 0 && target_size > 0 && std::isfinite(source_size) && std::isfinite(target_size) &&
+     std::abs(std::ilogb(source_size) - std::ilogb(target_size)) > 256)
+    throw Invalid_input("the target's size (about 2^" + std::to_string(std::ilogb(target_size)) + ") and the source's (2^" +
+                        std::to_string(std::ilogb(source_size)) + ") differ by more than 2^256: distortions cannot be "
+                        "evaluated in double precision; scale one of them");
 }
 
 template <int n>

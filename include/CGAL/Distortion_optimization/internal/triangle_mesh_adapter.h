@@ -93,6 +93,7 @@ public:
     for(std::size_t i = 0; i < source.size(); ++i)
       largest = std::max({largest, source[i].cwiseAbs().maxCoeff(), target_of_vertex[i].cwiseAbs().maxCoeff()});
     scale = coordinate_scale(largest);
+    check_comparable_sizes(largest_extent(source), largest_extent(target_of_vertex));
     if(scale != 1)
       for(std::size_t i = 0; i < source.size(); ++i) {
         source[i] *= scale;

@@ -230,7 +230,7 @@ std::size_t barrier_descent(Optimization_problem<n>& p, Barrier_energy<n>& energ
   return steps;
 }
 
-// Throws Invalid_input if an inverted or flat cell has only constrained vertices: no untangling
+// Throws Unmovable_inverted_cell if an inverted or flat cell has only constrained vertices: no untangling
 // moves it. Checked on the whole map, so that the message names the cell by its index there.
 template <int n, class GeomTraits>
 void check_tangled_cells_can_move(const Optimization_problem<n>& problem, const GeomTraits& traits)
@@ -239,8 +239,8 @@ void check_tangled_cells_can_move(const Optimization_problem<n>& problem, const 
     bool moves = false;
     for(auto v : problem.map.cells[c]) moves = moves || problem.is_free[v];
     if(!moves && is_tangled(problem.map, c, traits))
-      throw Invalid_input("cell " + std::to_string(c) + " is inverted or flat and all its vertices are constrained: "
-                          "no map with these constraints is injective");
+      throw Unmovable_inverted_cell("cell " + std::to_string(c) + " is inverted or flat and all its vertices are "
+                                    "constrained: no map with these constraints is injective", c);
   }
 }
 
@@ -340,9 +340,15 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   } else if(report.inverted_after > 0 && !report.stopped_by_visitor) {
     const std::size_t still = report.inverted_after;
     problem.map.target = start_targets;
-    throw Invalid_input("untangling failed: " + std::to_string(still) + " of " + std::to_string(report.inverted_before) +
-                        " inverted or flat cells remain after " + std::to_string(report.iterations) +
-                        " rounds; the constraints may admit no injective map");
+    // (The count may exceed the start's: a round may flip valid cells on its way.)
+    const bool constrained = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end();
+    const std::string why = constrained ? "the constraints may admit no injective map"
+                          : 2 * report.inverted_before > problem.map.number_of_cells()
+                            ? "no vertex is constrained, and the start inverts most cells: it may be a mirror image (reflect it)"
+                            : "no vertex is constrained, yet the descent found no injective map";
+    throw Invalid_input("untangling failed: " + std::to_string(still) + " inverted or flat cells remain after " +
+                        std::to_string(report.iterations) + " rounds (" + std::to_string(report.inverted_before) +
+                        " at the start); " + why);
   }
   return report;
 }

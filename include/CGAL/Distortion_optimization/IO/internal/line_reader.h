@@ -189,13 +189,14 @@ public:
     throw Invalid_input(printable(name_ + ":" + std::to_string(line_number_) + ": " + what));
   }
 
-  double coordinate(std::string_view token) const
+  // `what` names the number in the message (a coordinate, a weight).
+  double coordinate(std::string_view token, const char* what = "coordinate") const
   {
     double x;
     if(!parse_number(token, x)) fail("'" + std::string(token) + "' is not a number");
     // strtod sets ERANGE for subnormals too (which the writers produce): only a result that is not
     // finite is refused.
-    if(!std::isfinite(x)) fail("coordinate '" + std::string(token) + "' is not a finite number");
+    if(!std::isfinite(x)) fail(std::string(what) + " '" + std::string(token) + "' is not a finite number");
     return x;
   }
 
@@ -211,7 +212,8 @@ public:
     char* end = nullptr;
     errno = 0;
     i = std::strtoll(begin, &end, 10);
-    if(end == begin || end != begin + copy.size() || errno == ERANGE) fail("'" + copy + "' is not an integer");
+    if(end == begin || end != begin + copy.size()) fail("'" + copy + "' is not an integer");
+    if(errno == ERANGE) fail("integer '" + copy + "' is out of range");
     return i;
   }
 
@@ -301,7 +303,7 @@ public:
   }
 
   [[noreturn]] void fail(const std::string& what) const { lines_.fail(what); }
-  double coordinate(std::string_view token) const { return lines_.coordinate(token); }
+  double coordinate(std::string_view token, const char* what = "coordinate") const { return lines_.coordinate(token, what); }
   long long integer(std::string_view token) const { return lines_.integer(token); }
 
   // Whether `token` is a whole number, integer or real (infinities and NaN included).
