@@ -10,11 +10,14 @@
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -127,7 +130,9 @@ std::string usage()
   "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
   "               seconds); the default when stderr is a terminal; --quiet: none\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
-  "               started, and write that map (the report says stopped_by_time_limit)\n";
+  "               started, and write that map (the report says stopped_by_time_limit); a limit\n"
+  "               reached while untangling, cells still inverted, fails (status 1)\n"
+  "exit status: 0 done; 1 bad input or a failed run, nothing written; 2 a usage error\n";
 }
 
 struct Usage_error : std::runtime_error
@@ -171,15 +176,26 @@ bool tetrahedral_file(const std::string& path)
   return e == "mesh" || e == "ele" || e == "node";
 }
 
+// The whole text as a number: no spaces around it; one that T cannot hold ("99999999999999999999",
+// "1e309") is out of range rather than not a number.
 template <class T>
 T parse_number(const std::string& option, const std::string& text)
 {
   std::istringstream in(text);
   T value;
-  if(!(in >> value) || !in.eof()) throw Usage_error(option + " expects a number, not '" + text + "'");
+  const bool spaced = text.find_first_of(" \t\n\r\f\v") != std::string::npos;
+  if(spaced || !(in >> value) || !in.eof()) {
+    errno = 0;
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);
+    const bool whole = !spaced && !text.empty() && end == text.c_str() + text.size();
+    const bool too_large = std::is_integral<T>::value ? whole && text.find_first_not_of("+0123456789") == std::string::npos
+                                                      : whole && errno == ERANGE;
+    if(too_large) throw Usage_error(option + " '" + text + "' is out of range");
+    throw Usage_error(option + " expects a number, not '" + text + "'");
+  }
   // An unsigned read of "-5" wraps around instead of failing; "1e-5" is positive.
-  const std::size_t first = text.find_first_not_of(" \t");
-  if(value < 0 || (first != std::string::npos && text[first] == '-')) throw Usage_error(option + " must not be negative");
+  if(value < 0 || (std::is_unsigned<T>::value && text[0] == '-')) throw Usage_error(option + " must not be negative");
   return value;
 }
 

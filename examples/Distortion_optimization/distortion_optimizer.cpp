@@ -63,6 +63,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -248,13 +249,29 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
               cells, vertices, measure_name.c_str(), r.initial_energy, r.final_energy, r.iterations, r.seconds,
               r.inverted_cells);
   if(r.stopped_by_visitor) std::printf("stopped_by_time_limit true\n");
-  if(r.stopped_by_visitor && r.inverted_cells > 0)   // written as documented, but not a valid map
-    std::fprintf(stderr, "distortion_optimizer: warning: the time limit stopped the untangling: the result has %zu "
-                 "inverted or flat cells\n", r.inverted_cells);
   if(c.untangle || c.volume_mode())
     std::printf("inverted_start_cells  %zu\nuntangle_iterations   %zu\nuntangle_seconds      %.3f\n", r.inverted_start_cells,
                 r.untangle_iterations, r.untangle_seconds);
   for(const auto& [name, value] : fields) std::printf("%-21s %s\n", name.c_str(), value.c_str());
+}
+
+// A run that --time-limit stopped during the untangling has no valid map to write.
+void check_untangled(const DO::Result& r)
+{
+  if(r.stopped_by_visitor && r.inverted_cells > 0)
+    throw DO::Invalid_input("the time limit stopped the untangling with " + std::to_string(r.inverted_cells) +
+                            " inverted or flat cells left (" + std::to_string(r.inverted_start_cells) +
+                            " at the start) after " + std::to_string(r.untangle_iterations) +
+                            " rounds; nothing written (a longer --time-limit lets it finish)");
+}
+
+// Each cell's value for a picture: an infinite one (drawn red) where the map inverts or flattens
+// the cell, also under a measure finite there (ARAP, Dirichlet).
+std::vector<double> red_where_inverted(std::vector<double> values, const std::vector<bool>& inverted)
+{
+  for(std::size_t i = 0; i < values.size(); ++i)
+    if(inverted[i]) values[i] = std::numeric_limits<double>::infinity();
+  return values;
 }
 
 // --svg (the map's cells coloured by `value_name`, beside the source's with --svg-both) and
@@ -365,16 +382,18 @@ int run_triangles(const Command_line& c)
                     : CGAL::minimize_distortion(mesh, uv, measure, np);
     });
   });
+  check_untangled(r);
   if(c.ideal()) fields = quality_fields(before, DO::mesh_quality(mesh, uv));
   const std::size_t cells = mesh.number_of_faces(), vertices = mesh.number_of_vertices();
 
-  // The map's distortion, each face's value into per_face.
+  // The map's distortion, each face's value into per_face, and which faces it inverts or flattens.
   auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
+  auto inverted_face = mesh.add_property_map<Mesh::Face_index, bool>("f:inverted").first;
   const auto distortion = [&] {
     return DO::with_measure(c.measure, [&](const auto& measure) {
-      return planar ? CGAL::compute_distortion(mesh, uv, measure,
-                        DO::parameters::cell_distortion_map(per_face, CGAL::parameters::vertex_point_map(source_2)))
-                    : CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
+      const auto np = DO::parameters::cell_distortion_map(per_face, DO::parameters::inverted_cell_map(inverted_face));
+      return planar ? CGAL::compute_distortion(mesh, uv, measure, np.vertex_point_map(source_2))
+                    : CGAL::compute_distortion(mesh, uv, measure, np);
     });
   };
   DO::IO::Triangle_soup output;
@@ -394,23 +413,37 @@ int run_triangles(const Command_line& c)
       for(Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[i++] = std::size_t(v);
       refined.cells.push_back(t);
     }
-    DO::IO::write_triangle_soup(c.subdivided_source, refined);
     output.cells = refined.cells;
-    // Loop's smoothing may invert cells of the refined map (linear keeps the map's): told, not hidden.
+    // Loop's smoothing may invert cells of the refined map, and so may linear midpoints rounded on
+    // a nearly flat cell (a measure finite on flat cells lets cells get that thin): no output then.
+    // (A map inverted already, under such a measure without --untangle, is refined as it is.)
     const DO::Distortion_statistics refined_distortion = distortion();
-    if(refined_distortion.inverted_cells > 0)
-      std::cerr << "distortion_optimizer: warning: the subdivided map has " << refined_distortion.inverted_cells
-                << " inverted or flat cells (--scheme linear keeps the map injective)\n";
+    if(refined_distortion.inverted_cells > 0 && r.inverted_cells == 0)
+      throw DO::Invalid_input("the subdivided map has " + std::to_string(refined_distortion.inverted_cells) +
+                              " inverted or flat cells (" +
+                              (c.scheme == "loop" ? std::string("Loop's smoothing folds it; --scheme linear keeps the optimized map's cells")
+                                                  : "rounded midpoints of nearly flat cells of the optimized map; a measure infinite "
+                                                    "on flat cells keeps them away") + "); nothing written");
+    DO::IO::write_triangle_soup(c.subdivided_source, refined);
+    // The refined map's energy under --cell-weighting; its new vertices have no weights of their
+    // own, so every vertex weighs 1 here.
+    const double refined_energy = c.cell_weighting == "uniform" ? refined_distortion.mean_uniform
+                                : c.cell_weighting == "volume" ? refined_distortion.mean_volume
+                                                               : refined_distortion.mean_average_volume;
     fields.insert(fields.end(), {{"subdivided_cells", std::to_string(mesh.number_of_faces())},
                                  {"subdivided_vertices", std::to_string(mesh.number_of_vertices())},
-                                 {"subdivided_energy", json_number(refined_distortion.mean_volume)},
+                                 {"subdivided_energy", json_number(refined_energy)},
                                  {"subdivided_inverted_cells", std::to_string(refined_distortion.inverted_cells)}});
   }
   for(Vertex v : mesh.vertices()) output.points.push_back({uv[v].x(), uv[v].y(), 0.});
   std::vector<double> values;   // each face's distortion, evaluated once for the outputs that show it
+  std::vector<bool> inverted;   // whether the map inverts or flattens each face
   if(DO::IO::internal::extension(c.output) == "vtu" || (!c.svg.empty() && !c.ideal())) {
     distortion();
-    for(auto f : mesh.faces()) values.push_back(per_face[f]);
+    for(auto f : mesh.faces()) {
+      values.push_back(per_face[f]);
+      inverted.push_back(inverted_face[f]);
+    }
   }
   if(!c.flat_output.empty()) DO::IO::write_triangle_soup(c.flat_output, output);
   if(!planar && DO::IO::internal::extension(c.output) == "obj") {
@@ -439,17 +472,9 @@ int run_triangles(const Command_line& c)
                      DO::IO::triangle_panel("after", output.points, output.cells, DO::radius_ratios(output.points, output.cells)),
                      "radius ratio", measure_name, r);
     else {
-      // Red (an infinite value) marks the cells the map inverts or flattens, also under a measure
-      // finite there (ARAP, Dirichlet); a planar source's own orientation is the positive one.
-      for(std::size_t f = 0; f < output.cells.size(); ++f) {
-        const auto& t = output.cells[f];
-        const Vertex a(static_cast<Mesh::size_type>(t[0])), b(static_cast<Mesh::size_type>(t[1])), d(static_cast<Mesh::size_type>(t[2]));
-        const CGAL::Orientation o = CGAL::orientation(uv[a], uv[b], uv[d]);
-        if(o == CGAL::COLLINEAR || o != (planar ? CGAL::orientation(source_2[a], source_2[b], source_2[d]) : CGAL::LEFT_TURN))
-          values[f] = std::numeric_limits<double>::infinity();
-      }
-      write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, values),
-                     DO::IO::triangle_panel("map", output.points, output.cells, values), measure_name, measure_name, r);
+      const std::vector<double> shown = red_where_inverted(values, inverted);
+      write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, shown),
+                     DO::IO::triangle_panel("map", output.points, output.cells, shown), measure_name, measure_name, r);
     }
   } else {
     write_pictures(c, {}, {}, measure_name, measure_name, r);
@@ -528,8 +553,12 @@ struct Carried_surface
   {
     auto image = mesh.add_property_map<Vertex, K::Point_3>("v:carried").first;
     DO::carry_surface_vertices(mesh, embedding, target, image);
-    const auto stats = DO::with_measure(c.measure, [&](const auto& measure) { return CGAL::compute_distortion(mesh, image, measure); });
-    return stats.mean_volume;
+    try {   // its errors name the carried surface, not the map's source
+      const auto stats = DO::with_measure(c.measure, [&](const auto& measure) { return CGAL::compute_distortion(mesh, image, measure); });
+      return stats.mean_volume;
+    } catch(const DO::Invalid_input& e) {
+      throw DO::Invalid_input(c.carry + " (the carried surface): " + e.what());
+    }
   }
 
   template <class Target>
@@ -638,6 +667,7 @@ int run_tetrahedra(const Command_line& c)
       throw DO::Invalid_input(std::string(e.what()) + " (--boundary slide lets the boundary vertices move)");
     }
   });
+  check_untangled(r);
   DO::IO::Tetrahedron_soup output = source;
   for(std::size_t i = 0; i < handles.size(); ++i)
     if(handles[i] != Tr::Vertex_handle()) {
@@ -647,17 +677,21 @@ int run_tetrahedra(const Command_line& c)
       output.points[i] = target.points[i];
     }
   std::vector<double> values;   // each source cell's distortion, for pictures
+  std::vector<bool> inverted;   // whether the map inverts or flattens each cell
   if(DO::IO::internal::extension(c.output) == "vtu" || (!c.svg.empty() && !c.ideal())) {
     std::unordered_map<Tr::Cell_handle, double> per_cell;
+    std::unordered_map<Tr::Cell_handle, bool> inverted_cell;
     DO::with_measure(c.measure, [&](const auto& measure) {
       return CGAL::compute_distortion(c3t3, target_map, measure,
-                                      DO::parameters::cell_distortion_map(boost::associative_property_map<decltype(per_cell)>(per_cell)));
+                                      DO::parameters::cell_distortion_map(boost::make_assoc_property_map(per_cell),
+                                        DO::parameters::inverted_cell_map(boost::make_assoc_property_map(inverted_cell))));
     });
     for(const auto& t : source.cells) {
       Tr::Cell_handle cell;
       int i0, i1, i2, i3;
       c3t3.triangulation().is_cell(handles[t[0]], handles[t[1]], handles[t[2]], handles[t[3]], cell, i0, i1, i2, i3);
       values.push_back(per_cell.at(cell));
+      inverted.push_back(inverted_cell.at(cell));
     }
   }
   if(DO::IO::internal::extension(c.output) == "vtu") {
@@ -678,15 +712,9 @@ int run_tetrahedra(const Command_line& c)
                    DO::IO::cross_section_panel("after, section z = middle", output.points, output.cells,
                                                DO::radius_ratios(output.points, output.cells)), "radius ratio", measure_name, r);
   else {
-    // Red (an infinite value) marks the cells the map inverts or flattens, whatever the measure.
-    for(std::size_t i = 0; i < source.cells.size(); ++i) {
-      const auto point = [&](std::size_t v) { return K::Point_3(output.points[v][0], output.points[v][1], output.points[v][2]); };
-      const auto& t = source.cells[i];
-      if(CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) != CGAL::POSITIVE)
-        values[i] = std::numeric_limits<double>::infinity();
-    }
-    write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, values),
-                   DO::IO::cross_section_panel("map, section z = middle", output.points, output.cells, values),
+    const std::vector<double> shown = red_where_inverted(values, inverted);
+    write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, shown),
+                   DO::IO::cross_section_panel("map, section z = middle", output.points, output.cells, shown),
                    measure_name, measure_name, r);
   }
   std::vector<std::pair<std::string, std::string>> fields;
@@ -765,6 +793,10 @@ int main(int argc, char** argv)
     }
     std::cerr << "distortion_optimizer: " << e.what() << " (run with --help for the usage)\n";
     return 2;
+  } catch(const std::bad_alloc&) {
+    std::cerr << "distortion_optimizer: out of memory (a mesh too large for this machine, or --subdivide with too many "
+                 "levels: each multiplies the cells by 4); nothing written\n";
+    return 1;
   } catch(const std::exception& e) {
     std::cerr << "distortion_optimizer: " << e.what() << "\n";
     return 1;

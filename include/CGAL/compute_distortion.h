@@ -25,22 +25,30 @@ namespace Distortion_optimization {
 namespace internal {
 
 // Evaluates an adapter's map (Triangle_mesh_adapter or C3t3_adapter) with the given weights of the
-// map's vertices, writing per-cell values to the named parameters' optional cell_distortion_map.
+// map's vertices, writing per-cell values to the named parameters' optional cell_distortion_map and
+// inverted_cell_map. With `oriented` false (a surface-to-surface map, which has no orientation) no
+// cell counts as inverted.
 template <class Adapter, class Measure, class NamedParameters>
 Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& measure, const NamedParameters& np,
-                                       const std::vector<double>& vertex_weights)
+                                       const std::vector<double>& vertex_weights, bool oriented = true)
 {
   auto cell_map = CGAL::parameters::get_parameter(np, internal_np::cell_distortion_map);
+  auto inverted_map = CGAL::parameters::get_parameter(np, internal_np::inverted_cell_map);
   constexpr bool wants_cells = !std::is_same<decltype(cell_map), CGAL::internal_np::Param_not_found>::value;
+  constexpr bool wants_inverted = !std::is_same<decltype(inverted_map), CGAL::internal_np::Param_not_found>::value;
   std::vector<double> per_cell;
+  std::vector<unsigned char> inverted;
   Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, vertex_weights,
-                                         wants_cells ? &per_cell : nullptr);
+                                         wants_cells ? &per_cell : nullptr, wants_inverted ? &inverted : nullptr);
+  if(!oriented) stats.inverted_cells = 0;
   // Volume-weighted energies in the user's units: the adapter scaled coordinates (coordinate_scale).
   const double volume_unit = std::pow(1. / adapter.scale, Adapter::dimension);
   stats.energy_volume *= volume_unit;
   stats.energy_average_volume *= volume_unit;
   if constexpr(wants_cells)
     for(std::size_t c = 0; c < per_cell.size(); ++c) put(cell_map, adapter.cell_of[c], per_cell[c]);
+  if constexpr(wants_inverted)
+    for(std::size_t c = 0; c < inverted.size(); ++c) put(inverted_map, adapter.cell_of[c], oriented && inverted[c] != 0);
   return stats;
 }
 
@@ -104,6 +112,17 @@ normalized measure). Only this function accepts `Point_3` targets for a triangle
     \cgalParamExtra{Written only when the function returns normally.}
   \cgalParamNEnd
 
+  \cgalParamNBegin{inverted_cell_map}
+    \cgalParamDescription{a property map that receives, for each face of `tm`, whether the map inverts or flattens
+                          it: the faces counted in `inverted_cells`
+                          (`Distortion_optimization::parameters::inverted_cell_map()`)}
+    \cgalParamType{a class model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{Written only when the function returns normally; `false` for every face with a `Point_3` target.
+                    Some measures are finite on inverted cells (ARAP, Dirichlet): this map tells them apart.}
+  \cgalParamNEnd
+
   \cgalParamNBegin{geom_traits}
     \cgalParamDescription{an instance of a geometric traits class}
     \cgalParamType{a class model of `Kernel`}
@@ -131,12 +150,10 @@ compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measur
 {
   namespace DOI = Distortion_optimization::internal;
   const auto adapter = DOI::make_triangle_mesh_adapter(tm, target, np, std::true_type());
-  Distortion_optimization::Distortion_statistics stats =
-    DOI::evaluate_adapted(adapter, measure, np, adapter.map_vertex_weights(DOI::read_vertex_weights(adapter, np)));
   // A triangle measured in its own plane has no orientation to lose: its frame makes det J >= 0,
   // and a flat image would only be counted for being flat.
-  if constexpr(std::decay_t<decltype(adapter)>::per_corner) stats.inverted_cells = 0;
-  return stats;
+  return DOI::evaluate_adapted(adapter, measure, np, adapter.map_vertex_weights(DOI::read_vertex_weights(adapter, np)),
+                               !std::decay_t<decltype(adapter)>::per_corner);
 }
 
 /*!
@@ -173,6 +190,16 @@ complex `c3t3` (only the cells in the complex) from its position in the triangul
     \cgalParamType{a class model of `WritablePropertyMap` with `C3T3::Triangulation::Cell_handle`
                    as key type and `double` as value type}
     \cgalParamDefault{unused: no per-cell value is written}
+    \cgalParamExtra{Written only when the function returns normally.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{inverted_cell_map}
+    \cgalParamDescription{a property map that receives, for each cell of the complex, whether the map inverts or
+                          flattens it: the cells counted in `inverted_cells`
+                          (`Distortion_optimization::parameters::inverted_cell_map()`)}
+    \cgalParamType{a class model of `WritablePropertyMap` with `C3T3::Triangulation::Cell_handle`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{unused}
     \cgalParamExtra{Written only when the function returns normally.}
   \cgalParamNEnd
 

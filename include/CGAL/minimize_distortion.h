@@ -209,7 +209,9 @@ flattened (checked with exact predicates); the energy never increases.
 convergence threshold, a negative number of threads, a start map on which the measure is not a
 number, and, when the measure is infinite on inverted cells (normalized), a start map with an
 inverted or flat triangle (the message names it) unless `untangle_first` is set; with
-`untangle_first`, when the untangling fails.
+`untangle_first`, when the untangling fails; and for a measure that decreases as the map shrinks
+(Dirichlet, or a sum or product with it) when fewer than three vertices are constrained and none
+slides (its minimum collapses the map).
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
 `preserve_global_injectivity` when the boundary of the start map crosses itself.
 */
@@ -411,7 +413,8 @@ are the points of the triangulation.
 \returns a `Distortion_optimization::Result`
 
 \throws Distortion_optimization::Invalid_input, leaving `target` unchanged, as the triangle-mesh
-overload, and for a complex with no cell or with a source tetrahedron that is not positively
+overload (a measure that decreases as the map shrinks needs four constrained vertices here, or
+sliding ones), and for a complex with no cell or with a source tetrahedron that is not positively
 oriented.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
 `preserve_global_injectivity` when the boundary of the start map crosses itself.

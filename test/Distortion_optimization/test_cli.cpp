@@ -470,7 +470,8 @@ TEST(CommandLine, PicturesAndDisplacements)
   EXPECT_EQ(double(occurrences(slurp(p), "fill=\"#d62728\"/>")), inverted);
   EXPECT_NE(slurp(p).find("</tspan> " + std::to_string(int(inverted)) + " inverted or flat"), std::string::npos);
   // The sphere with its inner vertices shuffled (each at another's place): so tangled that the
-  // first round of untangling, after which the limit stops the run, leaves inverted cells.
+  // first round of untangling, after which the limit stops the run, leaves inverted cells. No
+  // valid map: status 1, and neither the map nor the plot is written.
   const IO::Tetrahedron_soup sphere = IO::read_tetrahedron_soup(data("sphere.mesh"));
   IO::Tetrahedron_soup shuffled = sphere;
   std::vector<std::size_t> inner;
@@ -482,12 +483,16 @@ TEST(CommandLine, PicturesAndDisplacements)
   std::shuffle(places.begin(), places.end(), std::mt19937(1));
   for(std::size_t k = 0; k < inner.size(); ++k) shuffled.points[inner[k]] = sphere.points[places[k]];
   IO::write_MEDIT_soup(temp("pic_shuffled.mesh"), shuffled);
-  result = run("--source " + data("sphere.mesh") + " --target " + temp("pic_shuffled.mesh") + " --output " + temp("x.mesh") +
+  std::remove(e.c_str());
+  const std::string stopped = temp("pic_stopped.mesh");
+  std::remove(stopped.c_str());
+  result = run("--source " + data("sphere.mesh") + " --target " + temp("pic_shuffled.mesh") + " --output " + stopped +
                " --energy-plot " + e + " --untangle --time-limit 1e-9 --harmonic-start off");
-  ASSERT_EQ(result.status, 0) << result.output;
-  EXPECT_NE(slurp(e).find(" energies not finite, not drawn"), std::string::npos);
-  EXPECT_NE(result.output.find("warning: the time limit stopped the untangling: the result has "), std::string::npos)
-    << result.output;
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("the time limit stopped the untangling with "), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("nothing written"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::ifstream(stopped).good());
+  EXPECT_FALSE(std::ifstream(e).good());
 
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + temp("x.off") + " --svg-both").status, 2);
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + temp("x.off") + " --svg " + temp("x.png")).status, 2);
@@ -629,6 +634,12 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure(base + " --target " + t + " --measure nonsense", 2, "unknown measure 'nonsense'");
   expect_failure(base + " --target " + t + " --solver newton", 2, "--solver");
   expect_failure(base + " --target " + t + " --iterations many", 2, "--iterations expects a number");
+  expect_failure(base + " --target " + t + " --iterations 99999999999999999999", 2, "--iterations '99999999999999999999' is out of range");
+  expect_failure(base + " --target " + t + " --time-limit 1e309", 2, "--time-limit '1e309' is out of range");
+  expect_failure(base + " --target " + t + " --iterations ' 2'", 2, "--iterations expects a number, not ' 2'");
+  expect_failure(base + " --target " + t + " --iterations '2 '", 2, "--iterations expects a number, not '2 '");
+  expect_failure(base + " --target " + t + " --measure dirichlet --fix none", 1,
+                 "the measure dirichlet decreases as the map shrinks, and no vertex is constrained");
   expect_failure("--source " + s + " --target " + t, 2, "--output is required");
 
   const std::string fewer = temp("fewer.off");
@@ -1153,6 +1164,44 @@ TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
     } else {
       EXPECT_GE(json_value(json, "subdivided_energy"), 1.);
     }
+  }
+  // subdivided_energy under the run's cell weighting (cells of different areas, so that the
+  // weightings differ): with linear, final_energy again.
+  const std::string graded = temp("sub_graded.off");
+  {
+    IO::Triangle_soup g = IO::read_triangle_soup(s);
+    for(auto& p : g.points) p[0] = p[0] * (0.5 + p[0]) / 1.5;
+    IO::write_triangle_soup(graded, g);
+  }
+  for(const std::string weighting : {"uniform", "volume"}) {
+    const Tool_run result = run("--source " + graded + " --target " + t + " --output " + o + " --subdivide 1 --subdivided-source " +
+                                s2 + " --report " + r + " --cell-weighting " + weighting);
+    ASSERT_EQ(result.status, 0) << result.output;
+    const std::string json = slurp(r);
+    EXPECT_NEAR(json_value(json, "subdivided_energy"), json_value(json, "final_energy"), 1e-12 * json_value(json, "final_energy"))
+      << weighting;
+  }
+  // A valid triangle so nearly flat that the rounded midpoints of its linear subdivision invert
+  // three of its four children (exact orientations): status 1, nothing written.
+  {
+    IO::Triangle_soup one, thin;
+    one.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    one.cells = {{0, 1, 2}};
+    thin = one;
+    thin.points = {{0.7104511603865951, -0.15770297486718032, 0}, {0.6669542399922945, 0.14804547057912476, 0},
+                   {0.6872193210164589, 0.005598213076417389, 0}};
+    const std::string a = temp("sub_one.off"), b = temp("sub_thin.off"), o1 = temp("sub_thin_out.off"),
+                      s1 = temp("sub_thin_source.off");
+    IO::write_triangle_soup(a, one);
+    IO::write_triangle_soup(b, thin);
+    std::remove(o1.c_str());
+    std::remove(s1.c_str());
+    const Tool_run thin_run = run("--source " + a + " --target " + b + " --output " + o1 + " --measure arap --iterations 0 "
+                                  "--harmonic-start off --subdivide 1 --subdivided-source " + s1);
+    EXPECT_EQ(thin_run.status, 1) << thin_run.output;
+    EXPECT_NE(thin_run.output.find("the subdivided map has 3 inverted or flat cells"), std::string::npos) << thin_run.output;
+    EXPECT_FALSE(std::ifstream(o1).good());
+    EXPECT_FALSE(std::ifstream(s1).good());
   }
   for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
         {" --subdivide 1", "go together"},

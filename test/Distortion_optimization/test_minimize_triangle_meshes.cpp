@@ -293,6 +293,39 @@ TEST(MinimizeDistortion, InvertedStartIsRejectedForANormalizedMeasure)
   EXPECT_LE(count_flipped(m.mesh, m.uv), flipped);
 }
 
+// The Dirichlet energy (and a sum or product with it) decreases as the map shrinks: with fewer than
+// three vertices constrained its minimum is the map collapsed onto them, which is refused before
+// anything runs; three hold the size.
+TEST(MinimizeDistortion, AMeasureThatShrinksTheMapNeedsThreeConstrainedVertices)
+{
+  Noisy_map m(affine, 0.02);
+  std::vector<Point_2> before;
+  for(auto v : m.mesh.vertices()) before.push_back(m.uv[v]);
+  auto pinned = m.mesh.add_property_map<Mesh2::Vertex_index, bool>("v:pinned", false).first;
+  const auto dirichlet_sum = DO::Weighted_sum(1., DO::Conformal_dilatation(), 0.1, DO::Dirichlet());
+  for(std::size_t pins = 0; pins < 3; ++pins) {
+    if(pins > 0) pinned[Mesh2::Vertex_index(static_cast<Mesh2::size_type>(40 * pins))] = true;
+    for(bool sum : {false, true}) {
+      try {
+        const auto np = CGAL::parameters::vertex_is_constrained_map(pinned);
+        sum ? CGAL::minimize_distortion(m.mesh, m.uv, dirichlet_sum, np) : CGAL::minimize_distortion(m.mesh, m.uv, DO::Dirichlet(), np);
+        ADD_FAILURE() << pins << " pins: the collapse was run";
+      } catch(const DO::Invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("shrinks"), std::string::npos) << e.what();
+      }
+      std::size_t i = 0;
+      for(auto v : m.mesh.vertices()) EXPECT_EQ(m.uv[v], before[i++]);   // nothing written
+    }
+  }
+  pinned[Mesh2::Vertex_index(150)] = true;
+  const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::Dirichlet(), CGAL::parameters::vertex_is_constrained_map(pinned));
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_LE(r.final_energy, r.initial_energy);
+  // ARAP and the isometric measures hold the size themselves: nothing constrained is fine.
+  pinned[Mesh2::Vertex_index(40)] = pinned[Mesh2::Vertex_index(80)] = pinned[Mesh2::Vertex_index(150)] = false;
+  EXPECT_NO_THROW(CGAL::minimize_distortion(m.mesh, m.uv, DO::ARAP(), CGAL::parameters::vertex_is_constrained_map(pinned)));
+}
+
 TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
 {
   for(const char* name : {"nefertiti.off", "mushroom.off"}) {

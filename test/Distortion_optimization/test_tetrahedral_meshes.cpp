@@ -380,6 +380,13 @@ TEST(TetrahedralMeshes, TangledCubeWithAFixedBoundaryIsUntangledThenOptimized)
     if(!boundary.count(v)) p = Point_3(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
   const std::size_t tangled = inverted(c3t3, start);
   ASSERT_GT(tangled, 50u);
+  // compute_distortion's inverted_cell_map names the same cells, under a measure finite on them.
+  std::unordered_map<Tr::Cell_handle, bool> flagged;
+  const auto arap = CGAL::compute_distortion(c3t3, Target_map(start), DO::ARAP(),
+                                             DO::parameters::inverted_cell_map(boost::make_assoc_property_map(flagged)));
+  EXPECT_EQ(arap.inverted_cells, tangled);
+  ASSERT_EQ(flagged.size(), c3t3.number_of_cells_in_complex());
+  for(const auto& [cell, is_flagged] : flagged) EXPECT_EQ(is_flagged, !is_positive(cell, start));
   for(int threads : {1, 2}) {
     Target_storage storage = start;
     std::unordered_set<Vertex_handle> written;

@@ -130,15 +130,26 @@ TEST(ComputeDistortion, InvertedTrianglesAreCountedExactly)
   EXPECT_GT(s.inverted_cells, 0u);
   EXPECT_EQ(s.max, std::numeric_limits<double>::infinity());
   EXPECT_EQ(s.mean_volume, std::numeric_limits<double>::infinity());
-  // ARAP is finite on inverted cells, the count is the same.
-  const auto a = CGAL::compute_distortion(m, uv, DO::ARAP());
+  // ARAP is finite on inverted cells, the count is the same; inverted_cell_map names those cells.
+  auto inverted = m.add_property_map<Mesh2::Face_index, bool>("f:inverted", true).first;
+  const auto a = CGAL::compute_distortion(m, uv, DO::ARAP(), DO::parameters::inverted_cell_map(inverted));
   EXPECT_EQ(a.inverted_cells, s.inverted_cells);
   EXPECT_LT(a.max, std::numeric_limits<double>::infinity());
+  std::size_t flagged = 0;
+  for(auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    const auto p = m.source(h), q = m.target(h), r = m.target(m.next(h));
+    ASSERT_EQ(CGAL::orientation(m.point(p), m.point(q), m.point(r)), CGAL::LEFT_TURN);
+    EXPECT_EQ(inverted[f], CGAL::orientation(uv[p], uv[q], uv[r]) != CGAL::LEFT_TURN) << f;
+    flagged += inverted[f];
+  }
+  EXPECT_EQ(flagged, a.inverted_cells);
 
   // A triangle mapped to a segment is degenerate: counted, and K is infinite.
   auto flat = make_target(m, [](const Point_2& p) { return Point_2(p.x(), 0); });
-  const auto d = CGAL::compute_distortion(m, flat, DO::Conformal_dilatation());
+  const auto d = CGAL::compute_distortion(m, flat, DO::Conformal_dilatation(), DO::parameters::inverted_cell_map(inverted));
   EXPECT_EQ(d.inverted_cells, m.number_of_faces());
+  for(auto f : m.faces()) EXPECT_TRUE(inverted[f]) << f;
 }
 
 TEST(ComputeDistortion, ClockwiseSourceKeepsItsOrientation)

@@ -356,9 +356,15 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   expect_invalid([&] { DO::mesh_interior(good, DOP::cell_radius_edge_ratio(1.)); }, "radius-edge ratio");
   expect_invalid([&] { DO::mesh_interior(good, DOP::sharp_edge_angle(0.)); }, "sharp edge angle");
   expect_invalid([&] { DO::mesh_interior(good, DOP::odt_iterations(-1)); }, "ODT and Lloyd");
-  // Far more vertices than allowed: the run stops with an error instead of a partial mesh.
+  // Sizes that ask for more vertices than allowed (given, or 10^7) are refused before Mesh_3 runs.
   expect_invalid([&] { DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100))); },
-                 "stopped at 100 vertices");
+                 "more than maximum_number_of_vertices");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(1e-4)); }, "vertices, more than 10^7 (cell size 0.0001");
+  // Sizes that ask for few vertices where the facet distance needs many: the run stops with an
+  // error instead of a partial mesh.
+  expect_invalid([&] {
+    DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100), DOP::cell_size(1., DOP::facet_distance(1e-2))));
+  }, "stopped at 100 vertices");
   EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);
 }
 

@@ -10,8 +10,10 @@
 #define CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
@@ -80,27 +82,24 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using Point_3 = typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using Point_2 = typename boost::property_traits<UVMap>::value_type;
-  // CGAL's parameterizers square lengths, and the area below squares areas: far from unit size
-  // (an extent beyond 2^+-64) they overflow or underflow. Such a mesh is parameterized as a copy scaled by
-  // a power of two, exactly, and the map scaled back.
-  CGAL::Bbox_3 box;
-  for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
-  const double extent = (std::max)({box.x_span(), box.y_span(), box.z_span()});
-  const int exponent = extent > 0 && std::isfinite(extent) ? std::ilogb(extent) : 0;
-  if(std::abs(exponent) > 64) {
+  // CGAL's parameterizers square lengths, and the area below squares areas: far from unit size they
+  // overflow or underflow. Such a mesh is parameterized as a copy scaled by the adapters' power of
+  // two (exact), and the map scaled back.
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
+  const double scale = internal::coordinate_scale((std::max)({box.x_span(), box.y_span(), box.z_span()}));
+  if(scale != 1) {
     CGAL::Surface_mesh<Point_3> copy;
     std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
                           typename CGAL::Surface_mesh<Point_3>::Vertex_index>> copied;
     CGAL::copy_face_graph(tm, copy, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(copied)));
     for(auto v : copy.vertices()) {
       const Point_3& p = copy.point(v);
-      copy.point(v) = Point_3(std::scalbn(CGAL::to_double(p.x()), -exponent), std::scalbn(CGAL::to_double(p.y()), -exponent),
-                              std::scalbn(CGAL::to_double(p.z()), -exponent));
+      copy.point(v) = Point_3(scale * CGAL::to_double(p.x()), scale * CGAL::to_double(p.y()), scale * CGAL::to_double(p.z()));
     }
     auto copy_uv = copy.template add_property_map<typename CGAL::Surface_mesh<Point_3>::Vertex_index, Point_2>("v:uv").first;
     initial_parameterization(copy, copy_uv, kind, border);
     for(const auto& [v, w] : copied)
-      put(uv, v, Point_2(std::scalbn(CGAL::to_double(copy_uv[w].x()), exponent), std::scalbn(CGAL::to_double(copy_uv[w].y()), exponent)));
+      put(uv, v, Point_2(CGAL::to_double(copy_uv[w].x()) / scale, CGAL::to_double(copy_uv[w].y()) / scale));
     return;
   }
   using Circle = SMP::Circular_border_arc_length_parameterizer_3<TriangleMesh>;

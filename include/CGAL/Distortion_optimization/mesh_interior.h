@@ -48,6 +48,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -641,7 +642,9 @@ h / 10.
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{10 times the number of vertices the sizes ask for,
                       `V / (0.2 cell_size^3) / 5.5 + A / (0.3 facet_size^2) / 2` (at most 10^15)}
-    \cgalParamExtra{Mesh_3 checks it while refining, not while protecting the sharp edges.}
+    \cgalParamExtra{Mesh_3 checks it while refining, not while protecting the sharp edges. Sizes that ask for more
+                    vertices than this maximum (when it is given and not 0), or than 10^7 (when it is not
+                    given), are refused before Mesh_3 starts.}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -649,7 +652,8 @@ h / 10.
 \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
 that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
 degenerate face or two faces that cross, encloses no volume, if a size is not a positive finite
-number (or an angle or ratio is out of its range), if Mesh_3 reaches
+number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
+`maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, or if the complex has no cell.
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -680,8 +684,20 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
 
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +
                        checked.area / (D::area_per_facet * sizes.facet_size * sizes.facet_size) / 2;
-  const std::size_t maximum_vertices = choose_parameter(get_parameter(np, internal_np::maximum_number_of_vertices),
-                                                        static_cast<std::size_t>((std::min)(10 * asked, 1e15)));
+  const auto given_maximum = get_parameter(np, internal_np::maximum_number_of_vertices);
+  constexpr bool maximum_given = !std::is_same<std::decay_t<decltype(given_maximum)>, CGAL::internal_np::Param_not_found>::value;
+  const std::size_t maximum_vertices = choose_parameter(given_maximum, static_cast<std::size_t>((std::min)(10 * asked, 1e15)));
+  // Sizes that ask for more vertices than memory holds are refused before Mesh_3 starts rather than
+  // after it has filled the memory: beyond the maximum when one is given, else beyond 10^7.
+  const double affordable = maximum_given && maximum_vertices > 0 ? double(maximum_vertices) : maximum_given ? 1e300 : 1e7;
+  if(!(asked <= affordable)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "about %.2g vertices, more than %s (cell size %.3g, facet size %.3g)",
+                  (std::min)(asked, 1e300),
+                  maximum_given ? "maximum_number_of_vertices" : "10^7", sizes.cell_size, sizes.facet_size);
+    throw Invalid_input(std::string("mesh_interior: the sizes ask for ") + text + "; give larger sizes" +
+                        (maximum_given ? "" : ", or a larger maximum_number_of_vertices"));
+  }
 
   const typename Types::Criteria criteria(mp::edge_size = sizes.edge_size, mp::facet_angle = sizes.facet_angle,
                                           mp::facet_size = sizes.facet_size,

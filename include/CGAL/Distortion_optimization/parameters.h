@@ -73,6 +73,7 @@ enum schedule_t { schedule };
 enum use_harmonic_start_t { use_harmonic_start };
 enum vertex_weight_map_t { vertex_weight_map };
 enum cell_distortion_map_t { cell_distortion_map };
+enum inverted_cell_map_t { inverted_cell_map };
 enum cell_weighting_t { cell_weighting };
 enum convergence_threshold_t { convergence_threshold };
 enum local_solver_t { local_solver };
@@ -101,6 +102,9 @@ namespace parameters {
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_weight_map_t, vertex_weight_map)
 /// A writable cell (face) property map that receives the distortion of each cell.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_distortion_map_t, cell_distortion_map)
+/// A writable cell (face) property map that receives, for each cell, whether the map inverts or
+/// flattens it (`true`) or keeps its orientation (`false`).
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(inverted_cell_map_t, inverted_cell_map)
 /// A `Cell_weighting`; default `Cell_weighting::AVERAGE_VOLUME`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_weighting_t, cell_weighting)
 

@@ -33,10 +33,11 @@ flat states. Constrained vertices never move, and with `preserve_global_injectiv
 boundary that does not cross itself never starts to. Every orientation is decided by the
 `geom_traits`' exact predicates.
 When the rounds end with triangles still inverted and `tm` is a disk (one boundary loop) with at
-most two constrained vertices, the untangling starts again from Tutte's embedding of `tm` (the
-boundary on a circle, each inner vertex the mean of its neighbours), moved by a similarity onto the
-constrained vertices: an injective map, for folds no descent opens (an ear of a free boundary
-turned inside out).
+most three constrained vertices, the untangling starts again from Tutte's embedding of `tm` (the
+boundary on a circle, each inner vertex the mean of its neighbours), moved onto the constrained
+vertices by a similarity (at most two) or an affine map keeping orientations (three, where their
+targets allow one): an injective map, for folds no descent opens (an ear of a free boundary turned
+inside out).
 Use `CGAL::minimize_distortion()` afterwards (or its named parameter `untangle_first`) to optimize
 a measure from the untangled map.
 

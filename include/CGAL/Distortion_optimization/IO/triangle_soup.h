@@ -282,11 +282,14 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       if(word == "element" && (words >> name >> count)) elements += static_cast<std::size_t>(count);
     }
     if(!ascii) return;
-    const std::vector<std::string> lines = split(bytes);
-    std::size_t i = 0, seen = 0;
-    while(i < lines.size() && lines[i].compare(0, 10, "end_header") != 0) ++i;
-    for(++i; i < lines.size(); ++i)
-      if(!blank(lines[i]) && ++seen > elements) after(i, "the " + std::to_string(elements) + " elements the header announces");
+    // The lines after end_header's, numbered in the whole file.
+    const std::size_t first = 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + header_end, '\n'));
+    const std::size_t body = bytes.find('\n', header_end);
+    const std::vector<std::string> lines = body == std::string::npos ? std::vector<std::string>() : split(bytes.substr(body + 1));
+    std::size_t seen = 0;
+    for(std::size_t i = 0; i < lines.size(); ++i)
+      if(!blank(lines[i]) && ++seen > elements)
+        after(first + i, "the " + std::to_string(elements) + " elements the header announces");
   } else if(e == "stl") {
     const auto word = [&](std::size_t at) {   // little-endian, as STL stores it
       std::uint32_t w = 0;
@@ -333,12 +336,26 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
       if(in.bad()) throw Invalid_input(shown + ": cannot read the file");
     }
     check_bytes_for_CGAL(bytes, shown, e);
-    if(e == "ts") {
+    // CGAL's stream readers on the bytes read above (no newline translation: either mode reads them).
+    const auto read = [&](CGAL::IO::Mode mode, auto reader) {
       std::istringstream in(bytes);
-      CGAL::IO::set_mode(in, CGAL::IO::ASCII);
-      ok = CGAL::IO::read_GOCAD(in, points, faces);
+      CGAL::IO::set_mode(in, mode);
+      return reader(in);
+    };
+    if(e == "ts") {
+      ok = read(CGAL::IO::ASCII, [&](std::istream& in) { return CGAL::IO::read_GOCAD(in, points, faces); });
+    } else if(e == "ply") {
+      ok = read(CGAL::IO::BINARY, [&](std::istream& in) { return CGAL::IO::read_PLY(in, points, faces); });
     } else {
-      ok = e == "ply" ? CGAL::IO::read_PLY(path, points, faces) : CGAL::IO::read_STL(path, points, faces);
+      // As CGAL's read_STL(file name): binary first, then ASCII.
+      ok = read(CGAL::IO::BINARY, [&](std::istream& in) { return CGAL::IO::read_STL(in, points, faces); });
+      if(!ok) {
+        points.clear();
+        faces.clear();
+        ok = read(CGAL::IO::ASCII, [&](std::istream& in) {
+          return CGAL::IO::read_STL(in, points, faces, CGAL::parameters::use_binary_mode(false));
+        });
+      }
     }
   } catch(const Invalid_input&) {
     throw;

@@ -147,6 +147,27 @@ private:
   Vertex_partition partition_;
 };
 
+// Throws unless something holds the map's size where the measure decreases as the map shrinks
+// (Dirichlet, or a sum or product with it): then its infimum is the map collapsed onto its
+// constrained vertices, every cell flat, and a run ends near that unless at least n + 1 vertices
+// are constrained or some slide on a surface.
+template <int n, class Measure>
+void check_size_is_held(const Optimization_problem<n>& problem, const Measure& measure)
+{
+  if(!(measure.template value<n>(Singular_values<n>::Constant(0.5)) < value_on_rigid_maps<n>(measure))) return;
+  std::size_t constrained = 0;
+  for(std::size_t v = 0; v < problem.number_of_vertices(); ++v) {
+    if(problem.slides(v)) return;
+    constrained += !problem.is_free[v];
+  }
+  if(constrained > n) return;
+  throw Invalid_input("the measure " + measure.name() + " decreases as the map shrinks, and " +
+                      (constrained == 0 ? std::string("no vertex is") : "only " + std::to_string(constrained) +
+                       (constrained == 1 ? " vertex is" : " vertices are")) +
+                      " constrained: its minimum collapses the map (every cell flat); constrain at least " +
+                      std::to_string(n + 1) + " vertices, e.g. the boundary");
+}
+
 // Minimizes in place the target positions of problem.map; throws Invalid_input for a start the
 // measure cannot be evaluated on. The traits' orientation predicates decide which cells are valid.
 template <int n, class Measure, class GeomTraits>

@@ -19,11 +19,13 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// minimize_distortion(): with untangle_first, an inverted start is untangled first.
+// minimize_distortion(): with untangle_first, an inverted start is untangled first. A measure whose
+// minimum collapses the map is refused before anything runs (check_size_is_held).
 template <class Adapter, class TargetMap, class Measure, class NamedParameters>
 Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measure, const NamedParameters& np)
 {
   Optimization_problem<Adapter::dimension> problem = make_problem(adapter, np);
+  check_size_is_held(problem, measure);
   const Options options = read_options(np);
   Untangle_report untangled;
   if(options.untangle_first) {

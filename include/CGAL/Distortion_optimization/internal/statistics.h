@@ -22,17 +22,20 @@ namespace Distortion_optimization {
 namespace internal {
 
 // vertex_weights: omega(v), empty for omega = 1. per_cell (optional) receives D(J_c). The traits'
-// orientation predicates count the inverted cells.
+// orientation predicates count the inverted cells; inverted_per_cell (optional) receives 1 for
+// each of them, 0 for the others.
 template <int n, class Measure, class GeomTraits>
 Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& measure, const GeomTraits& traits,
                                const std::vector<double>& vertex_weights,
-                               std::vector<double>* per_cell = nullptr)
+                               std::vector<double>* per_cell = nullptr,
+                               std::vector<unsigned char>* inverted_per_cell = nullptr)
 {
   Distortion_statistics s;
   s.cells = map.number_of_cells();
   s.min = std::numeric_limits<double>::infinity();
   s.max = -std::numeric_limits<double>::infinity();
   if(per_cell) per_cell->resize(s.cells);
+  if(inverted_per_cell) inverted_per_cell->assign(s.cells, 0);
   double sum_uniform = 0, sum_volume = 0;
   std::vector<double> values(s.cells);
   cell_distortions<n>(measure, map, s.cells, [](std::size_t c) { return c; }, values.data());
@@ -52,7 +55,10 @@ Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& meas
     sum_volume += omega * map.rest_volume[c];
     s.min = std::min(s.min, d);
     s.max = std::max(s.max, d);
-    if(is_inverted(map, c, traits)) ++s.inverted_cells;
+    if(is_inverted(map, c, traits)) {
+      ++s.inverted_cells;
+      if(inverted_per_cell) (*inverted_per_cell)[c] = 1;
+    }
   }
   s.energy_average_volume = s.energy_volume / (n + 1);
   s.mean_uniform = s.energy_uniform / sum_uniform;

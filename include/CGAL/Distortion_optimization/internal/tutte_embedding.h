@@ -29,17 +29,19 @@ namespace Distortion_optimization {
 namespace internal {
 
 // Tutte's embedding of p's mesh into x, scaled to the area p's cells have at det J =
-// `typical_det`, then moved by the similarity that puts p's constrained vertices (at most two)
-// back on their targets. Returns false, x unspecified, where it does not apply: the mesh is not a
-// disk (one boundary loop through every boundary vertex, Euler characteristic 1), more than two
-// vertices are constrained, two constrained vertices share a target, or the solve fails.
+// `typical_det`, then moved by the similarity (at most two constrained vertices) or the affine map
+// (three) that puts p's constrained vertices back on their targets. Returns false, x unspecified,
+// where it does not apply: the mesh is not a disk (one boundary loop through every boundary vertex,
+// Euler characteristic 1), more than three vertices are constrained, two constrained vertices share
+// a target, three constrained vertices' targets are not as their embedding oriented (no affine map
+// keeping orientations sends them there), or the solve fails.
 inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det, std::vector<Vector<2>>& x)
 {
   const std::size_t nv = p.number_of_vertices(), nc = p.map.number_of_cells();
   std::vector<std::uint32_t> constrained;
   for(std::uint32_t v = 0; v < nv; ++v)
     if(!p.is_free[v]) constrained.push_back(v);
-  if(constrained.size() > 2 || !p.is_sliding.empty() || nc == 0) return false;
+  if(constrained.size() > 3 || !p.is_sliding.empty() || nc == 0) return false;
 
   // Edges as (smaller vertex, larger vertex, cell, position of the edge's first vertex in it).
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, int>> edges;
@@ -121,8 +123,20 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
       if(column[v] >= 0) x[v] = X.row(column[v]).transpose();
   }
 
-  // The similarity (rotation, scale, translation: orientations kept) back to the constrained targets.
-  if(constrained.size() == 2) {
+  // The affine map, or the similarity (rotation, scale, translation), back to the constrained
+  // targets: orientations kept.
+  if(constrained.size() == 3) {
+    Matrix<2> from, to;
+    for(int k = 0; k < 2; ++k) {
+      from.col(k) = x[constrained[k + 1]] - x[constrained[0]];
+      to.col(k) = p.map.target[constrained[k + 1]] - p.map.target[constrained[0]];
+    }
+    if(!(from.determinant() * to.determinant() > 0)) return false;
+    const Matrix<2> A = to * from.inverse();
+    const Vector<2> origin = x[constrained[0]];
+    for(Vector<2>& y : x) y = p.map.target[constrained[0]] + A * (y - origin);
+    if(!A.allFinite()) return false;
+  } else if(constrained.size() == 2) {
     const Vector<2> from = x[constrained[1]] - x[constrained[0]];
     const Vector<2> to = p.map.target[constrained[1]] - p.map.target[constrained[0]];
     if(!(to.norm() > 0) || !(from.norm() > 0)) return false;

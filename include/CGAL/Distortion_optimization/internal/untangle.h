@@ -485,7 +485,7 @@ Untangle_report untangle_from_start(Optimization_problem<n>& problem, const Geom
 }
 
 // Untangles problem.map in place (untangle_from_start()), or when that fails on a planar disk
-// with at most two constrained vertices, from its Tutte embedding (tutte_embedding.h): an
+// with at most three constrained vertices, from its Tutte embedding (tutte_embedding.h): an
 // injective map that is untangled already unless rounding left cells flat. Throws as
 // untangle_everywhere() when neither applies or succeeds, the map unchanged.
 template <int n, class GeomTraits>
