@@ -439,7 +439,7 @@ int run_triangles(const Command_line& c)
   std::vector<double> values;   // each face's distortion, evaluated once for the outputs that show it
   std::vector<bool> inverted;   // whether the map inverts or flattens each face
   if(DO::IO::internal::extension(c.output) == "vtu" || (!c.svg.empty() && !c.ideal())) {
-    distortion();
+    if(c.subdivide == 0) distortion();   // (a subdivided map's values are in per_face already)
     for(auto f : mesh.faces()) {
       values.push_back(per_face[f]);
       inverted.push_back(inverted_face[f]);
