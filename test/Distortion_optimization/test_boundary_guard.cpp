@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <set>
@@ -107,6 +108,31 @@ bool brute_force_injective(const std::vector<Guard2::Face>& faces, const std::ve
   return true;
 }
 
+// Whether faces with no common vertex are farther apart than 1e-12 of the largest coordinate:
+// the guard's moves keep a clearance of 64 units in the last place (a vertex moved to the rounded
+// midpoint of a segment is 1e-16 off it: injective, yet refused).
+template <int n, class Face>
+bool clear_of_each_other(const std::vector<Face>& faces, const std::vector<Vector<n>>& t)
+{
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  double largest = 0;
+  for(const auto& x : t) largest = std::max(largest, x.cwiseAbs().maxCoeff());
+  const auto object = [&](const Face& f) {
+    if constexpr(n == 2) return IK::Segment_2(IK::Point_2(t[f[0]][0], t[f[0]][1]), IK::Point_2(t[f[1]][0], t[f[1]][1]));
+    else {
+      auto p = [&](Index v) { return IK::Point_3(t[v][0], t[v][1], t[v][2]); };
+      return IK::Triangle_3(p(f[0]), p(f[1]), p(f[2]));
+    }
+  };
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(std::size_t j = i + 1; j < faces.size(); ++j) {
+      bool shared = false;
+      for(Index u : faces[i]) shared = shared || std::find(faces[j].begin(), faces[j].end(), u) != faces[j].end();
+      if(!shared && !(CGAL::squared_distance(object(faces[i]), object(faces[j])) > std::pow(1e-12 * largest, 2))) return false;
+    }
+  return true;
+}
+
 // Only the pairs with a face of `moved` when given (the exact constructions are slow in 3D).
 bool brute_force_injective(const std::vector<Guard3::Face>& faces, const std::vector<Vector<3>>& t,
                            const Index* moved = nullptr)
@@ -166,7 +192,7 @@ void check_random_moves(Map<n>& m, DOI::Boundary_guard<n>& guard, const std::vec
     move(v);
     const bool injective = expected(v);
     ASSERT_EQ(guard.accepts_move(v, m.target), injective) << "move " << k;
-    ASSERT_EQ(guard.is_injective(m.target), injective) << "move " << k;
+    ASSERT_EQ(guard.is_injective(m.target, nullptr, guard.keeps_clearance()), injective) << "move " << k;
     if(injective) {
       guard.commit_move(v, m.target);
       ++accepted;
@@ -353,7 +379,7 @@ TEST(BoundaryGuard, AgreesWithBruteForceOnRandomPlanarMoves)
         m.target[v] = rng() % 2 ? m.target[f[0]] : Vector<2>((m.target[f[0]] + m.target[f[1]]) / 2);
       }
     }
-  }, [&](Index) { return brute_force_injective(faces, m.target); }, accepted, rejected);
+  }, [&](Index) { return brute_force_injective(faces, m.target) && clear_of_each_other<2>(faces, m.target); }, accepted, rejected);
   ASSERT_FALSE(HasFatalFailure());
   EXPECT_GT(accepted, 100);
   EXPECT_GT(rejected, 100);
@@ -457,10 +483,13 @@ TEST(BoundaryGuard, TrianglesSharingAnEdgeOrAVertex)
   EXPECT_FALSE(brute_force_injective(faces, u));
   u[4] = Vector<3>(0.5, 0, 0);   // onto edge 01: the tets share a segment
   EXPECT_FALSE(pair.accepts_move(4, u));
-  u[4] = Vector<3>(0.5, -1e-300, 0);   // just off it: only vertex 0 is shared again
-  EXPECT_TRUE(pair.accepts_move(4, u));
+  u[4] = Vector<3>(0.5, -1e-300, 0);   // just off it: only vertex 0 is shared again, but closer than the clearance
+  EXPECT_FALSE(pair.accepts_move(4, u));
   EXPECT_TRUE(pair.is_injective(u));
   EXPECT_TRUE(brute_force_injective(faces, u));
+  u[4] = Vector<3>(0.5, -1e-10, 0);   // clear of it
+  EXPECT_TRUE(pair.accepts_move(4, u));
+  EXPECT_TRUE(pair.is_injective(u, nullptr, true));
 }
 
 TEST(BoundaryGuard, AgreesWithBruteForceOnRandomTetBoundaryMoves)
@@ -480,7 +509,7 @@ TEST(BoundaryGuard, AgreesWithBruteForceOnRandomTetBoundaryMoves)
       case 1: m.target[v] += Vector<3>(large(rng), large(rng), large(rng)); break;
       default: m.target[v] = Vector<3>(lattice(rng), lattice(rng), lattice(rng)) / 2;   // exact degeneracies
     }
-  }, [&](Index v) { return brute_force_injective(faces, m.target, &v); },   // the state before was injective
+  }, [&](Index v) { return brute_force_injective(faces, m.target, &v) && clear_of_each_other<3>(faces, m.target); },
      accepted, rejected);
   ASSERT_FALSE(HasFatalFailure());
   EXPECT_TRUE(brute_force_injective(faces, m.target));

@@ -14,12 +14,21 @@
 // refit). Boxes only grow, so after B/4 refits the tree is rebuilt: O(log B) amortized per commit.
 // CGAL::AABB_tree cannot refit a single leaf (and is 3D only), hence this tree; is_injective() runs
 // CGAL::box_self_intersection_d on current boxes. Not thread-safe: queries share scratch space.
+//
+// Clearance. Moves also keep faces without a common vertex apart by more than 64 units in the last
+// place of their coordinates (clearance()): a vertex that stops 1e-19 from another boundary edge
+// is outside it in doubles, but may be on it or across once the map is written in decimal and
+// read back (a free border that wants to overlap itself pushes vertices that close). Unless the
+// map had two faces that close at the last rebuild(): then the exact tests only.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
 
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
+#include <CGAL/Distance_2/Segment_2_Segment_2.h>
+#include <CGAL/Distance_3/Point_3_Triangle_3.h>   // before the next: CGAL 5.5 forgets to include it there
+#include <CGAL/Distance_3/Triangle_3_Triangle_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Intersections_2/Segment_2_Segment_2.h>
 #include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
@@ -32,6 +41,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -108,7 +118,15 @@ public:
     leaf_.assign(B, 0);
     refits_ = 0;
     if(B > 0) build(order.data(), order.data() + B, -1, boxes, centres);
+    // A map whose boundary is already closer to itself than that (given so) keeps the exact tests.
+    // A quarter of the clearance here: distances so small are computed to a few percent, and a
+    // pair that a move kept just beyond the clearance must not turn it off.
+    keeps_clearance_ = is_injective(target, nullptr, true, 0.25);
   }
+
+  // Whether moves keep faces apart by their clearance (see the header), as the map had them at the
+  // last rebuild().
+  bool keeps_clearance() const { return keeps_clearance_; }
 
   // Whether the trial position target[v] keeps the boundary injective. Only v may have moved since
   // the last rebuild() or commit_move(): the state then is assumed injective.
@@ -123,22 +141,26 @@ public:
     for(const std::uint32_t* f = ring; f != ring_end; ++f) {
       if(is_degenerate(*f, target)) return false;
       for(const std::uint32_t* g = ring; g != f; ++g)
-        if(improper(*f, *g, target)) return false;
+        if(improper(*f, *g, target, keeps_clearance_ ? 1. : 0.)) return false;
     }
-    // Then one traversal for the whole ring (the star's box), each candidate against each ring face.
+    // Then one traversal for the whole ring (the star's box), each candidate against each ring
+    // face; boxes grown by twice the ring's clearance, which bounds any candidate's near it.
     ring_boxes_.clear();
     Box star;
     for(const std::uint32_t* f = ring; f != ring_end; ++f) {
       ring_boxes_.push_back(face_box(*f, target));
       star.extend(ring_boxes_.back());
     }
+    const double near = keeps_clearance_ ? 2 * clearance(star) : 0.;
+    for(Box& b : ring_boxes_) b = grown(b, near);
+    star = grown(star, near);
     return visit(star, [&](std::uint32_t g) {   // false stops the traversal
       if(contains(g, v)) return true;
       const Box box = face_box(g, target);
       if(!box.intersects(star)) return true;
       if(degenerate_[g]) return false;
       for(std::size_t i = 0; i < ring_boxes_.size(); ++i)
-        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target)) return false;
+        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target, keeps_clearance_ ? 1. : 0.)) return false;
       return true;
     });
   }
@@ -165,8 +187,10 @@ public:
 
   // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests. If
   // `crossing` is given, it receives the vertices of every face that is degenerate or meets another
-  // improperly (not only the first found), so that a caller may hold them back.
-  bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr) const
+  // improperly (not only the first found), so that a caller may hold them back. With `with_clearance`
+  // (a move's check), faces closer than `fraction` of their clearance() count as meeting.
+  bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr,
+                    bool with_clearance = false, double fraction = 1) const
   {
     using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
     if(crossing) crossing->clear();
@@ -185,7 +209,8 @@ public:
         if(!crossing) return false;
         continue;
       }
-      const Box b = face_box(f, target);
+      Box b = face_box(f, target);
+      if(with_clearance) b = grown(b, fraction * clearance(b));
       double lo[n], hi[n];
       for(int i = 0; i < n; ++i) { lo[i] = b.min()[i]; hi[i] = b.max()[i]; }
       boxes.emplace_back(lo, hi, f);
@@ -193,7 +218,7 @@ public:
     // A callback cannot stop box_self_intersection_d: without `crossing`, it skips the tests once
     // one crossing is found.
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box_d& a, const Box_d& b) {
-      if((injective || crossing) && improper(a.info(), b.info(), target)) {
+      if((injective || crossing) && improper(a.info(), b.info(), target, with_clearance ? fraction : 0.)) {
         injective = false;
         report(a.info());
         report(b.info());
@@ -220,6 +245,7 @@ private:
   std::vector<std::int32_t> leaf_;           // node of each face
   std::vector<unsigned char> degenerate_;    // per face, as of its last rebuild() or commit_move()
   std::size_t refits_ = 0;
+  bool keeps_clearance_ = false;
   std::vector<std::int32_t> stack_;          // scratch of accepts_move()
   std::vector<Box> ring_boxes_;
 
@@ -227,6 +253,21 @@ private:
   {
     Box b(target[faces_[f][0]]);
     for(int i = 1; i < n; ++i) b.extend(target[faces_[f][i]]);
+    return b;
+  }
+
+  // 64 units in the last place of the box's largest coordinate, times sqrt(n): the distance a few
+  // roundings of each coordinate can move a point.
+  static double clearance(const Box& b)
+  {
+    const double largest = std::max(b.min().cwiseAbs().maxCoeff(), b.max().cwiseAbs().maxCoeff());
+    return 64 * std::numeric_limits<double>::epsilon() * largest * std::sqrt(double(n));
+  }
+
+  static Box grown(Box b, double d)
+  {
+    b.min().array() -= d;
+    b.max().array() += d;
     return b;
   }
 
@@ -305,8 +346,10 @@ private:
   }
 
   // Whether two non-degenerate faces meet anywhere but in the vertices (2D) or the edge/vertex (3D)
-  // they share by index. Shared vertices are first moved to the front of both faces, same order.
-  bool improper(std::uint32_t fi, std::uint32_t gi, const std::vector<Vector<n>>& t) const
+  // they share by index; with a positive `clearance_fraction`, faces with no common vertex also
+  // when they are closer than that fraction of their clearance(). Shared vertices are first moved
+  // to the front of both faces, same order.
+  bool improper(std::uint32_t fi, std::uint32_t gi, const std::vector<Vector<n>>& t, double clearance_fraction = 0) const
   {
     Face a = faces_[fi], b = faces_[gi];
     int shared = 0;
@@ -321,7 +364,11 @@ private:
     if(shared == n) return false;   // the same face listed twice
     if constexpr(n == 2) {
       const K::Point_2 s = point(a[0], t), q = point(a[1], t), r = point(b[1], t);
-      if(shared == 0) return CGAL::do_intersect(K::Segment_2(s, q), K::Segment_2(r, point(b[0], t)));
+      if(shared == 0) {
+        const K::Segment_2 e(s, q), g(r, point(b[0], t));
+        return CGAL::do_intersect(e, g) ||
+               (clearance_fraction > 0 && too_close(e, g, clearance_fraction * clearance(face_box(fi, t).merged(face_box(gi, t)))));
+      }
       // (s, q) and (s, r) meet beyond s iff q and r lie on the same ray from s.
       return CGAL::orientation(s, q, r) == CGAL::COLLINEAR &&
              (CGAL::collinear_are_ordered_along_line(s, q, r) ||
@@ -329,7 +376,11 @@ private:
     } else {
       const K::Point_3 a0 = point(a[0], t), a1 = point(a[1], t), a2 = point(a[2], t);
       const K::Point_3 b0 = point(b[0], t), b1 = point(b[1], t), b2 = point(b[2], t);
-      if(shared == 0) return CGAL::do_intersect(K::Triangle_3(a0, a1, a2), K::Triangle_3(b0, b1, b2));
+      if(shared == 0) {
+        const K::Triangle_3 e(a0, a1, a2), g(b0, b1, b2);
+        return CGAL::do_intersect(e, g) ||
+               (clearance_fraction > 0 && too_close(e, g, clearance_fraction * clearance(face_box(fi, t).merged(face_box(gi, t)))));
+      }
       // Sharing edge a0a1: unless coplanar the planes meet in that edge's line only; coplanar, the
       // triangles overlap iff a2 and b2 are not strictly on opposite sides of it.
       if(shared == 2)
@@ -345,6 +396,13 @@ private:
       return CGAL::do_intersect(K::Segment_3(a1, a2), K::Triangle_3(b0, b1, b2)) ||
              CGAL::do_intersect(K::Segment_3(b1, b2), K::Triangle_3(a0, a1, a2));
     }
+  }
+
+  // Two faces (segments or triangles) at most d apart.
+  template <class Face_object>
+  static bool too_close(const Face_object& e, const Face_object& g, double d)
+  {
+    return !(CGAL::squared_distance(e, g) > d * d);
   }
 };
 

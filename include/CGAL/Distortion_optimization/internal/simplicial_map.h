@@ -13,6 +13,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cmath>
@@ -162,6 +163,29 @@ bool is_numerically_flat(const Simplicial_map<n>& map, std::size_t c)
   const Matrix<n> J = map.jacobian(c);
   const double norm2 = J.squaredNorm();
   return !(J.determinant() > 1e-12 * (n == 2 ? norm2 : norm2 * std::sqrt(norm2)));
+}
+
+// Whether cell c's image, valid or not, is so thin that moving its vertices by a few units in the
+// last place of their coordinates (decimal output read back, a change of units) could invert it:
+// its signed volume, in its source's orientation, is at most 64 such moves' worth (the change of
+// det E under moves of length d is at most d times the sum of the gradients' norms, the opposite
+// edges' lengths in 2D, twice the opposite faces' areas in 3D).
+template <int n>
+bool is_fragile(const Simplicial_map<n>& map, std::size_t c)
+{
+  const auto& cell = map.cells[c];
+  const Matrix<n> E = map.target_edges(c);
+  double largest = 0;
+  for(auto v : cell) largest = std::max(largest, map.target[v].cwiseAbs().maxCoeff());
+  double gradients;
+  if constexpr(n == 2) {
+    gradients = E.col(0).norm() + E.col(1).norm() + (E.col(1) - E.col(0)).norm();
+  } else {
+    const Vector<3> a = E.col(0), b = E.col(1), d = E.col(2);
+    gradients = a.cross(b).norm() + b.cross(d).norm() + d.cross(a).norm() + (b - a).cross(d - a).norm();
+  }
+  const double move = 64 * std::numeric_limits<double>::epsilon() * largest * std::sqrt(double(n));
+  return !(map.rest_sign[c] * E.determinant() > move * gradients);
 }
 
 } // namespace internal
