@@ -42,13 +42,14 @@ std::unordered_set<typename Complex::Triangulation::Vertex_handle> boundary_vert
 
 // The unit cubes [i, i+1] x [j, j+1] x [k, k+1] of an n^3 block for which keep(i, j, k), each split
 // into the 6 tetrahedra of Freudenthal's (Kuhn's) subdivision, which conform across cubes. All
-// coordinates are integers: points on faces, edges and vertices are exact.
-inline C3t3 cube_complex(int n, const std::function<bool(int, int, int)>& keep = [](int, int, int) { return true; })
+// coordinates are integers (times `edge`): points on faces, edges and vertices are exact.
+inline C3t3 cube_complex(int n, const std::function<bool(int, int, int)>& keep = [](int, int, int) { return true; },
+                         double edge = 1)
 {
   std::vector<std::array<double, 3>> points;
   for(int k = 0; k <= n; ++k)
     for(int j = 0; j <= n; ++j)
-      for(int i = 0; i <= n; ++i) points.push_back({double(i), double(j), double(k)});
+      for(int i = 0; i <= n; ++i) points.push_back({i * edge, j * edge, k * edge});
   const auto at = [&](int i, int j, int k) { return std::size_t((k * (n + 1) + j) * (n + 1) + i); };
   const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   std::vector<std::array<std::size_t, 4>> tets;

@@ -223,3 +223,94 @@ TEST(MeshQuality, AnInvertedStartIsRejectedUnlessUntangledFirst)
   EXPECT_EQ(r.inverted_cells, 0u);
   EXPECT_EQ(DO::mesh_quality(mesh, mesh.points()).inverted_cells, 0u);
 }
+
+// Angles and radius ratios do not depend on the mesh's units: at 1e80 or 1e-80 they once
+// overflowed (a 90 degree minimum angle, every cell a sliver), in 2D and in 3D.
+TEST(MeshQuality, FiguresDoNotDependOnUnits)
+{
+  Mesh2 grid = equilateral_grid(6);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for(auto v : grid.vertices())
+    if(!grid.is_border(v)) grid.point(v) = Point_2(grid.point(v).x() + u(rng), grid.point(v).y() + u(rng));
+  const DO::Mesh_quality unit = DO::mesh_quality(grid, grid.points());
+  const auto expect_same = [](const DO::Mesh_quality& a, const DO::Mesh_quality& b, double scale) {
+    EXPECT_NEAR(a.min_angle, b.min_angle, 1e-9 * b.min_angle) << scale;
+    EXPECT_NEAR(a.max_angle, b.max_angle, 1e-9 * b.max_angle) << scale;
+    EXPECT_NEAR(a.mean_min_angle, b.mean_min_angle, 1e-9 * b.mean_min_angle) << scale;
+    EXPECT_NEAR(a.min_radius_ratio, b.min_radius_ratio, 1e-9 * b.min_radius_ratio) << scale;
+    EXPECT_NEAR(a.mean_radius_ratio, b.mean_radius_ratio, 1e-9 * b.mean_radius_ratio) << scale;
+    EXPECT_EQ(a.slivers, b.slivers) << scale;
+    EXPECT_EQ(a.inverted_cells, b.inverted_cells) << scale;
+  };
+  for(double scale : {1e80, 1e-80, 1e150, 1e-150}) {
+    Mesh2 scaled = grid;
+    for(auto v : scaled.vertices()) scaled.point(v) = Point_2(grid.point(v).x() * scale, grid.point(v).y() * scale);
+    expect_same(DO::mesh_quality(scaled, scaled.points()), unit, scale);
+  }
+
+  const C3t3 c3t3 = cube_complex(3);
+  Target_storage start;
+  DO::map_vertices(c3t3, Target_map(start), [&](const Point_3& p) { return Point_3(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng)); });
+  const DO::Mesh_quality unit3 = DO::mesh_quality(c3t3, Target_map(start));
+  ASSERT_EQ(unit3.inverted_cells, 0u);
+  for(double scale : {1e40, 1e-40, 1e100}) {
+    Target_storage scaled;
+    for(const auto& [v, p] : start) scaled[v] = Point_3(p.x() * scale, p.y() * scale, p.z() * scale);
+    expect_same(DO::mesh_quality(c3t3, Target_map(scaled)), unit3, scale);
+  }
+}
+
+// A sliding boundary in units far from 1 (1e80): the closest points of the surface once
+// overflowed, and every boundary vertex stayed where it was, as if fixed.
+TEST(MeshQuality, SlidingDoesNotDependOnUnits)
+{
+  double unit_energy = 0;
+  for(double scale : {1., 1e80, 1e-80}) {
+    const C3t3 c3t3 = cube_complex(4, [](int, int, int) { return true; }, scale);
+    Target_storage start;
+    DO::map_vertices(c3t3, Target_map(start), [](const Point_3& p) { return p; });
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-0.15, 0.15);
+    const auto inside = interior_vertices(c3t3);
+    for(Vertex_handle v : inside) {
+      const Point_3 p = start.at(v);
+      start[v] = Point_3(p.x() + scale * u(rng), p.y() + scale * u(rng), p.z() + scale * u(rng));
+    }
+    Target_storage positions = start;
+    const auto sharp = DO::sharp_boundary_vertices(c3t3, Target_map(start));
+    ASSERT_EQ(sharp.size(), 8u + 12u * 3u) << scale;
+    const DO::Result r = DO::improve_mesh_quality(c3t3, Target_map(positions), DO::Conformal_dilatation(),
+      DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, Target_map(start)),
+                                       CGAL::parameters::vertex_is_constrained_map(boost::make_function_property_map<Vertex_handle>(
+                                         [&](Vertex_handle v) { return sharp.count(v) > 0; }))));
+    if(scale == 1) unit_energy = r.final_energy;
+    EXPECT_NEAR(r.final_energy, unit_energy, 1e-6 * unit_energy) << scale;
+    const std::unordered_set<Vertex_handle> interior(inside.begin(), inside.end());
+    std::size_t moved = 0;   // boundary vertices
+    for(const auto& [v, p] : positions) {
+      const Point_3& s = start.at(v);
+      if(interior.count(v)) continue;
+      moved += p != s;
+      for(int k = 0; k < 3; ++k)   // on the face of the cube where they started
+        if(s[k] == 0 || s[k] == 4 * scale) EXPECT_NEAR(p[k], s[k], 1e-12 * scale) << scale;
+    }
+    EXPECT_GT(moved, 10u) << scale;
+  }
+}
+
+// Shapes are improved under measures infinite on flat cells only: ARAP and Dirichlet traded
+// some tetrahedra down to 1e-13 of their volume.
+TEST(MeshQuality, AMeasureFiniteOnFlatCellsIsRefused)
+{
+  Mesh2 mesh = equilateral_grid(3);
+  const Mesh2 copy = mesh;
+  EXPECT_THROW(DO::improve_mesh_quality(mesh, mesh.points(), DO::ARAP()), DO::Invalid_input);
+  EXPECT_THROW(DO::improve_mesh_quality(mesh, mesh.points(), DO::Dirichlet()), DO::Invalid_input);
+  for(auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), copy.point(v));
+  try {
+    DO::improve_mesh_quality(mesh, mesh.points(), DO::ARAP());
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("the measure arap is finite on flat cells"), std::string::npos) << e.what();
+  }
+}

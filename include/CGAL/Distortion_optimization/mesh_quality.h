@@ -82,9 +82,27 @@ Vector<3> as_vector(const Point& p)
     return Vector<3>(CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0.);
 }
 
-// The angles (degrees) and n r / R of a triangle or tetrahedron.
-inline void cell_shape(const std::array<Vector<3>, 3>& p, std::array<double, 6>& angles, int& count, double& ratio)
+// The cell moved to the origin and scaled by a power of two (exactly) to edges of about unit
+// length: angles and radius ratios do not change, and their products of up to five lengths
+// neither overflow nor underflow whatever the mesh's units.
+template <std::size_t N>
+std::array<Vector<3>, N> unit_sized(const std::array<Vector<3>, N>& p)
 {
+  std::array<Vector<3>, N> q;
+  double largest = 0;
+  for(std::size_t i = 0; i < N; ++i) {
+    q[i] = p[i] - p[0];
+    largest = std::max(largest, q[i].cwiseAbs().maxCoeff());
+  }
+  if(largest > 0 && std::isfinite(largest))
+    for(Vector<3>& x : q) x *= std::ldexp(1., -std::ilogb(largest));
+  return q;
+}
+
+// The angles (degrees) and n r / R of a triangle or tetrahedron.
+inline void cell_shape(const std::array<Vector<3>, 3>& cell, std::array<double, 6>& angles, int& count, double& ratio)
+{
+  const std::array<Vector<3>, 3> p = unit_sized(cell);
   count = 3;
   double perimeter = 0, product = 1;
   for(int i = 0; i < 3; ++i) {
@@ -98,8 +116,9 @@ inline void cell_shape(const std::array<Vector<3>, 3>& p, std::array<double, 6>&
   ratio = product > 0 ? 16 * area * area / (perimeter * product) : 0.;
 }
 
-inline void cell_shape(const std::array<Vector<3>, 4>& p, std::array<double, 6>& angles, int& count, double& ratio)
+inline void cell_shape(const std::array<Vector<3>, 4>& cell, std::array<double, 6>& angles, int& count, double& ratio)
 {
+  const std::array<Vector<3>, 4> p = unit_sized(cell);
   count = 6;
   static const int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
   for(int e = 0; e < 6; ++e) {
@@ -237,10 +256,11 @@ sharp_boundary_vertices(const C3T3& c3t3, const PositionMap& positions, double a
     for(int i = 0; i < 4; ++i) {
       if(c3t3.is_in_complex(c->neighbor(i))) continue;
       Vertex_handle v[3] = {c->vertex((i + 1) % 4), c->vertex((i + 2) % 4), c->vertex((i + 3) % 4)};
-      const internal::Vector<3> a = internal::as_vector(get(positions, v[0])), b = internal::as_vector(get(positions, v[1])),
-                                d = internal::as_vector(get(positions, v[2])), o = internal::as_vector(get(positions, c->vertex(i)));
-      internal::Vector<3> normal = (b - a).cross(d - a);
-      if(normal.dot(o - a) > 0) normal = -normal;   // outward
+      const auto x = internal::unit_sized(std::array<internal::Vector<3>, 4>{
+        internal::as_vector(get(positions, v[0])), internal::as_vector(get(positions, v[1])),
+        internal::as_vector(get(positions, v[2])), internal::as_vector(get(positions, c->vertex(i)))});
+      internal::Vector<3> normal = x[1].cross(x[2]);   // x[0] is the origin
+      if(normal.dot(x[3]) > 0) normal = -normal;   // outward
       normal.normalize();
       for(int k = 0; k < 3; ++k) normals[std::minmax(v[k], v[(k + 1) % 3])].push_back(normal);
     }
@@ -281,7 +301,7 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
 \param mesh the mesh (its connectivity; not modified)
 \param positions the vertex positions: read as the start, written with the improved ones (free
        vertices only). For a `Surface_mesh<Point_2>`, `mesh.points()` improves it in place.
-\param measure the distortion measure of the map from the ideal cells
+\param measure the distortion measure of the map from the ideal cells, normalized (infinite on flat cells)
 \param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
        ones listed below: those of `CGAL::minimize_distortion()` except `vertex_point_map`, which is
        ignored (the source is the ideal cells). Vertex maps are keyed as `positions` is.
@@ -420,7 +440,8 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
 \cgalNamedParamsEnd
 
 \returns the `Result` of the minimization: its energies are those of the map from the ideal cells
-\throws Invalid_input as `CGAL::minimize_distortion()`, e.g. for an inverted or flat start cell
+\throws Invalid_input for a measure that is not normalized (finite on flat cells: its minimum may flatten
+        cells), and as `CGAL::minimize_distortion()`, e.g. for an inverted or flat start cell
         under a normalized measure (`untangle_first(true)` repairs inverted ones first, and flat
         tetrahedra of a complex), and for a flat triangle of a triangle mesh at `positions`
         (a degenerate source triangle, whatever the named parameters)
@@ -430,6 +451,11 @@ template <class Mesh, class PositionMap, class Measure = Conformal_dilatation,
 Result improve_mesh_quality(const Mesh& mesh, PositionMap positions, const Measure& measure = Measure(),
                             const NamedParameters& np = CGAL::parameters::default_values())
 {
+  // A measure finite on flat cells (ARAP, Dirichlet) may trade some cells' shapes for the others'
+  // down to numerically flat ones, valid to the exact predicates and useless as elements.
+  if(!measure.is_normalized())
+    throw Invalid_input("improve_mesh_quality: the measure " + measure.name() + " is finite on flat cells, so its "
+                        "minimum may flatten some; take one infinite there (normalized), such as conformal or mips");
   if constexpr(internal::Is_c3t3<Mesh>::value) {
     auto adapter = internal::make_c3t3_adapter(mesh, positions, np);
     internal::use_ideal_cells(adapter.map);

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -100,13 +101,21 @@ public:
     : triangles_(std::make_shared<Triangles>())
   {
     if(triangles.empty()) throw Invalid_input("a sliding surface needs at least one triangle");
+    // The tree holds the surface scaled by a power of two (exactly) to coordinates of about 1: its
+    // closest-point constructions multiply several lengths, which overflow or underflow far from
+    // unit size (1e80 or 1e-80), where every query would fail.
+    double largest = 0;
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      for(const auto& p : triangles[i]) {
+        if(!std::isfinite(p[0] + p[1] + p[2]))
+          throw Invalid_input("triangle " + std::to_string(i) + " of the sliding surface has a non-finite coordinate");
+        largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+      }
+    if(largest > 0) scale_ = std::ldexp(1., -std::ilogb(largest));
     triangles_->reserve(triangles.size());
     for(const auto& t : triangles) {
-      for(const auto& p : t)
-        if(!std::isfinite(p[0] + p[1] + p[2]))
-          throw Invalid_input("triangle " + std::to_string(triangles_->size()) + " of the sliding surface has a non-finite coordinate");
-      triangles_->emplace_back(K::Point_3(t[0][0], t[0][1], t[0][2]), K::Point_3(t[1][0], t[1][1], t[1][2]),
-                               K::Point_3(t[2][0], t[2][1], t[2][2]));
+      const auto point = [&](const std::array<double, 3>& p) { return K::Point_3(p[0] * scale_, p[1] * scale_, p[2] * scale_); };
+      triangles_->emplace_back(point(t[0]), point(t[1]), point(t[2]));
       if(triangles_->back().is_degenerate())
         throw Invalid_input("triangle " + std::to_string(triangles_->size() - 1) + " of the sliding surface is degenerate");
     }
@@ -181,12 +190,12 @@ public:
   /// the triangle's vertex order).
   std::array<double, 3> project(const std::array<double, 3>& x, std::array<double, 3>& normal) const
   {
-    const auto hit = tree_->closest_point_and_primitive(K::Point_3(x[0], x[1], x[2]));
+    const auto hit = tree_->closest_point_and_primitive(K::Point_3(x[0] * scale_, x[1] * scale_, x[2] * scale_));
     const K::Triangle_3& t = *hit.second;
     const K::Vector_3 u = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
     const double length = std::sqrt(u.squared_length());
     normal = {u.x() / length, u.y() / length, u.z() / length};
-    return {hit.first.x(), hit.first.y(), hit.first.z()};
+    return {hit.first.x() / scale_, hit.first.y() / scale_, hit.first.z() / scale_};
   }
 
   /// The number of triangles.
@@ -196,6 +205,7 @@ private:
   // Shared, so that copies (the named parameter is taken by value) share one tree.
   std::shared_ptr<Triangles> triangles_;
   std::shared_ptr<Tree> tree_;
+  double scale_ = 1;   // a power of two: the tree's coordinates are the surface's times scale_
 };
 
 } // namespace Distortion_optimization
