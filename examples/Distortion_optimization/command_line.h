@@ -83,11 +83,13 @@ std::string usage()
   "  --cell-size  largest tetrahedron circumradius for the meshing (default: from the volume)\n"
   "  --center     the centre of the start map (default: the centroid of the volume)\n"
   "  --boundary   slide (default with ball): boundary vertices move on the start's boundary\n"
-  "               surface (the unit sphere for ball); fixed (default with radial)\n"
+  "               surface (the unit sphere for ball); fixed (default with radial); --fix none\n"
+  "               or FILE frees the boundary instead (refused with an explicit --boundary fixed)\n"
   "  --reference  ideal: improve the shapes of S's own cells (a planar triangle mesh, z = 0,\n"
-  "               or a .mesh), measured against regular triangles or tetrahedra; O gets S with\n"
-  "               the moved vertices; --boundary fixed (default) or slide (tetrahedra: on S's\n"
-  "               boundary, sharp edges fixed); the report adds quality before and after\n"
+  "               or a .mesh), measured against regular triangles or tetrahedra; O (.off, .obj\n"
+  "               or .mesh) gets S with the moved vertices; --boundary fixed (default) or slide\n"
+  "               (tetrahedra: on S's boundary, sharp edges fixed); the report adds quality\n"
+  "               before and after; NAME is a measure infinite on flat cells (not arap, dirichlet)\n"
   "  --subdivide  after optimizing a triangle map, subdivide its source and its result N times\n"
   "               (each triangle into four; --scheme linear, the default, keeps every energy,\n"
   "               loop smooths both): O gets the refined map, S2 (OFF/OBJ) the refined source\n"
@@ -97,10 +99,12 @@ std::string usage()
   "  NAME         " + names + "\n"
   "  --fix        boundary (default): border vertices keep their target; none; or a file with\n"
   "               one 0-based vertex index per line. With free border vertices the boundary is\n"
-  "               kept from crossing itself (global injectivity)\n"
+  "               kept from crossing itself (global injectivity), unless the start's crosses\n"
+  "               itself already: then a warning, and cells are kept from inverting only\n"
   "  --iterations largest number of iterations, each a local sweep and a global step (default 100)\n"
   "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
-  "               energy above the measure's minimum (default 1e-4)\n"
+  "               energy above its value on rigid maps (above 0 with arap or dirichlet in the\n"
+  "               measure, which are finite on flat cells) (default 1e-4)\n"
   "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
   "  --vertex-weights  a file of one positive weight per line, per vertex in the source's order\n"
   "               (the paper's omega(v), eq. 23; default 1)\n"
@@ -118,15 +122,15 @@ std::string usage()
   "  --harmonic-start  on (default, except with --schedule local) or off: start from the\n"
   "               harmonic map of the fixed vertices where it is valid and better\n"
   "  --threads    number of threads (default 1); the output is the same for every run with\n"
-  "               the same number\n"
+  "               the same number (and no --time-limit, which stops by the clock)\n"
   "  --report     also write the results as JSON\n"
   "  --untangle   when the start has inverted or flat cells, untangle it first (then optimize);\n"
   "               without it such a start is refused under a measure infinite there\n"
   "  --schedule   alternating (a local sweep then a global step per iteration, after a harmonic\n"
   "               start: the default with laplacian global steps, and with a smooth model's\n"
-  "               newton ones when the boundary slides), global (a global step per iteration,\n"
-  "               and a local sweep when it gains too little or is cut short: the default with\n"
-  "               the other newton ones) or local (the paper's sweeps only)\n"
+  "               newton ones when the boundary slides), global (a global step per iteration;\n"
+  "               the default with the other newton ones, which adds a local sweep to an\n"
+  "               iteration that gains too little or is cut short) or local (the paper's sweeps)\n"
   "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
   "               seconds); the default when stderr is a terminal; --quiet: none\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
@@ -378,6 +382,13 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("--boundary is slide or fixed, not '" + c.boundary + "'");
   if(c.slides() && c.fix_given && c.fix == "boundary")
     throw Usage_error("--fix boundary and --boundary slide contradict each other");
+  if(c.order == "greedy" && c.threads > 1)
+    throw Usage_error("--order greedy is the one-thread sweep (the paper's Algorithm 2): not with --threads " +
+                      std::to_string(c.threads));
+  if(c.boundary == "fixed" && c.fix != "boundary")
+    throw Usage_error("--boundary fixed and --fix " + std::string(c.fix == "none" ? "none" : "FILE") +
+                      " contradict each other (--fix FILE constrains only the listed vertices: list the boundary's "
+                      "there, or drop --boundary fixed)");
   if(!c.scheme.empty() && c.scheme != "linear" && c.scheme != "loop")
     throw Usage_error("--scheme is linear or loop, not '" + c.scheme + "'");
   if((c.subdivide > 0) != !c.subdivided_source.empty())

@@ -274,6 +274,20 @@ std::vector<double> red_where_inverted(std::vector<double> values, const std::ve
   return values;
 }
 
+// The triangles of a planar mesh oriented against the mesh as a whole (the sign of its total
+// area; flat ones included), as mesh_quality() counts them: drawn red in its quality picture.
+std::vector<bool> inverted_triangles(const std::vector<std::array<double, 3>>& points,
+                                     const std::vector<std::array<std::size_t, 3>>& cells)
+{
+  const auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
+  double area = 0;
+  for(const auto& t : cells) area += CGAL::area(point(t[0]), point(t[1]), point(t[2]));
+  std::vector<bool> inverted;
+  for(const auto& t : cells)
+    inverted.push_back(CGAL::orientation(point(t[0]), point(t[1]), point(t[2])) != (area >= 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN));
+  return inverted;
+}
+
 // --svg (the map's cells coloured by `value_name`, beside the source's with --svg-both) and
 // --energy-plot (the start's energy, then each iteration's).
 void write_pictures(const Command_line& c, DO::IO::Svg_panel source, DO::IO::Svg_panel map, const std::string& value_name,
@@ -325,7 +339,9 @@ int run_triangles(const Command_line& c)
         continue;
       }
       if(target.points[i][2] != 0)
-        throw DO::Invalid_input(c.target + ": vertex " + std::to_string(i) + " has z != 0 (the target must be planar)");
+        throw DO::Invalid_input(c.target + ": vertex " + std::to_string(i) + " has z != 0 (the target must be planar" +
+                                (target.texture_coordinates.empty() ? ")"
+                                 : "; its vt lines are not UVs of the map: no face refers to them, as in f v/vt)"));
       uv[Vertex(i)] = K::Point_2(target.points[i][0], target.points[i][1]);
     }
   } else {
@@ -468,8 +484,12 @@ int run_triangles(const Command_line& c)
     std::vector<std::array<double, 3>> points;
     for(Vertex v : mesh.vertices()) points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
     if(c.ideal())
-      write_pictures(c, DO::IO::triangle_panel("before", points, output.cells, DO::radius_ratios(points, output.cells)),
-                     DO::IO::triangle_panel("after", output.points, output.cells, DO::radius_ratios(output.points, output.cells)),
+      write_pictures(c, DO::IO::triangle_panel("before", points, output.cells,
+                                               red_where_inverted(DO::radius_ratios(points, output.cells),
+                                                                  inverted_triangles(points, output.cells))),
+                     DO::IO::triangle_panel("after", output.points, output.cells,
+                                            red_where_inverted(DO::radius_ratios(output.points, output.cells),
+                                                               inverted_triangles(output.points, output.cells))),
                      "radius ratio", measure_name, r);
     else {
       const std::vector<double> shown = red_where_inverted(values, inverted);
@@ -518,7 +538,13 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     soup = soup_of(c.cell_size > 0 ? DO::mesh_interior(surface, DO::parameters::cell_size(c.cell_size))
                                    : DO::mesh_interior(surface));
   } catch(const DO::Invalid_input& e) {
-    throw DO::Invalid_input(c.source + ": " + e.what());
+    // The library's remedies name its parameters; the tool's user has --cell-size (the facet size,
+    // and ten times the facet distance).
+    std::string what = e.what();
+    for(const auto& [library, tool] : {std::pair<std::string, std::string>("; give larger sizes", "; give a larger --cell-size"),
+                                       {"; give sizes below its thickness", "; give a --cell-size below 10 times its thickness"}})
+      if(const auto remedy = what.find(library); remedy != std::string::npos) what = what.substr(0, remedy) + tool;
+    throw DO::Invalid_input(c.source + ": " + what);
   }
   mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   return soup;
@@ -586,7 +612,16 @@ int run_tetrahedra(const Command_line& c)
   DO::IO::Tetrahedron_soup target = target_read.valid() ? target_read.get() : source;
   if(!c.target.empty()) check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "tetrahedron");
   C3t3 c3t3;
-  const auto handles = DO::c3t3_from_tetrahedra(source.points, source.cells, c3t3, 1, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
+  std::vector<Tr::Vertex_handle> handles;
+  try {
+    handles = DO::c3t3_from_tetrahedra(source.points, source.cells, c3t3, 1, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
+  } catch(const DO::Invalid_input& e) {
+    // The source's tetrahedra are the complex's: they must be valid, even where the map is
+    // untangled (--untangle repairs the target; with --reference ideal the target is S itself).
+    throw DO::Invalid_input((tetrahedral_file(c.source) ? c.source + ": " : std::string()) + e.what() +
+                            (c.ideal() ? " (--reference ideal takes a valid mesh: --untangle repairs a map's target, not the "
+                                         "source)" : ""));
+  }
   std::unordered_map<Tr::Vertex_handle, K::Point_3> storage;
   std::unordered_map<Tr::Vertex_handle, std::size_t> index;
   for(std::size_t i = 0; i < handles.size(); ++i)

@@ -39,8 +39,7 @@ Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& me
   std::vector<double> per_cell;
   std::vector<unsigned char> inverted;
   Distortion_statistics stats = evaluate(adapter.map, measure, adapter.traits, vertex_weights,
-                                         wants_cells ? &per_cell : nullptr, wants_inverted ? &inverted : nullptr);
-  if(!oriented) stats.inverted_cells = 0;
+                                         wants_cells ? &per_cell : nullptr, wants_inverted ? &inverted : nullptr, oriented);
   // Volume-weighted energies in the user's units: the adapter scaled coordinates (coordinate_scale).
   const double volume_unit = std::pow(1. / adapter.scale, Adapter::dimension);
   stats.energy_volume *= volume_unit;
@@ -48,7 +47,7 @@ Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& me
   if constexpr(wants_cells)
     for(std::size_t c = 0; c < per_cell.size(); ++c) put(cell_map, adapter.cell_of[c], per_cell[c]);
   if constexpr(wants_inverted)
-    for(std::size_t c = 0; c < inverted.size(); ++c) put(inverted_map, adapter.cell_of[c], oriented && inverted[c] != 0);
+    for(std::size_t c = 0; c < inverted.size(); ++c) put(inverted_map, adapter.cell_of[c], inverted[c] != 0);
   return stats;
 }
 

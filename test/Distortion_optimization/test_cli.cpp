@@ -356,6 +356,13 @@ TEST(CommandLine, ASurfaceMapIsWrittenAsUVsAndReadBack)
   result = run("--source " + square + " --target " + mixed + " --output " + o2);
   EXPECT_EQ(result.status, 1) << result.output;
   EXPECT_NE(result.output.find("texture indices and others not"), std::string::npos) << result.output;
+  // UVs that no face refers to are not the map: the target is then its (non-planar) vertices.
+  const std::string loose = temp("loose_uv.obj");
+  std::ofstream(loose) << "v 0 0 1\nv 1 0 0\nv 1 1 1\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1 2 3\nf 1 3 4\n";
+  result = run("--source " + square + " --target " + loose + " --output " + o2);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("vertex 0 has z != 0 (the target must be planar; its vt lines are not UVs of the map"),
+            std::string::npos) << result.output;
   EXPECT_EQ(run("--source " + temp("none.mesh") + " --target " + temp("none2.mesh") + " --output " + temp("x.mesh") +
                 " --flat-output " + f).status, 2);   // tetrahedra have no flat output
 }
@@ -589,6 +596,9 @@ TEST(CommandLine, WeightsOrdersSweepsAndWeightedSums)
   energies("--measure symmetric_dirichlet --iterations 1 --harmonic-start off");
   EXPECT_NE(slurp(o), harmonic);
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --order random").status, 2);
+  const Tool_run greedy_threads = run("--source " + s + " --target " + t + " --output " + o + " --order greedy --threads 2");
+  EXPECT_EQ(greedy_threads.status, 2);   // greedy is the one-thread sweep: not silently the sorted one
+  EXPECT_NE(greedy_threads.output.find("--order greedy is the one-thread sweep"), std::string::npos) << greedy_threads.output;
   EXPECT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --harmonic-start yes").status, 2);
   // Newton steps are the default for a triangle map: --global-step newton writes the same map;
   // the Laplacian's steps reach the same energy by another path.
@@ -1043,6 +1053,16 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure("--source " + cube + " --start ball --fix boundary" + base, 2, "contradict");
   expect_failure("--source " + cube + " --start ball --center 1,2" + base, 2, "--center expects X,Y,Z");
   expect_failure("--source " + cube + " --start ball --cell-size 0" + " --output " + o, 2, "--cell-size must be a positive number");
+  expect_failure("--source " + cube + " --start ball --cell-size 1e-4 --output " + o, 1,
+                 "vertices, more than 10^7 (cell size 0.0001, facet size");
+  expect_failure("--source " + cube + " --start ball --cell-size 1e-4 --output " + o, 1, "; give a larger --cell-size");
+  const std::string plate = temp("plate.off");   // 2 x 2 x 2e-6: thinner than the default facet distance
+  std::ofstream(plate) << "OFF\n8 12 0\n-1 -1 -1e-6\n1 -1 -1e-6\n-1 1 -1e-6\n1 1 -1e-6\n-1 -1 1e-6\n1 -1 1e-6\n-1 1 1e-6\n"
+                          "1 1 1e-6\n3 0 2 1\n3 1 2 3\n3 4 5 6\n3 5 7 6\n3 0 1 4\n3 1 5 4\n3 2 6 3\n3 3 6 7\n3 0 4 2\n"
+                          "3 2 4 6\n3 1 3 5\n3 3 7 5\n";
+  expect_failure("--source " + plate + " --start ball --output " + o, 1,
+                 "the volume is thinner (2 volume / area = 2e-06) than the facet distance");
+  expect_failure("--source " + plate + " --start ball --output " + o, 1, "; give a --cell-size below 10 times its thickness");
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + cube, 2, "go together");
   expect_failure("--source " + cube + " --start ball --output " + temp("x.off"), 2, "--output must end in .mesh or .vtu");
 }
@@ -1125,8 +1145,27 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
   EXPECT_GT(json_value(json, "min_dihedral_after"), json_value(json, "min_dihedral_before"));
   EXPECT_LE(json_value(json, "slivers_after"), json_value(json, "slivers_before"));
 
+  // A Medit file's vertex references and boundary triangles (CGAL's surface patches) are kept.
+  const std::string sphere = temp("ideal_sphere.mesh");
+  ASSERT_EQ(run("--source " + data("sphere.mesh") + " --reference ideal --iterations 1 --output " + sphere).status, 0);
+  const IO::Tetrahedron_soup given = IO::read_tetrahedron_soup(data("sphere.mesh")), kept = IO::read_tetrahedron_soup(sphere);
+  EXPECT_EQ(kept.cells, given.cells);
+  EXPECT_EQ(kept.labels, given.labels);
+  EXPECT_EQ(kept.point_labels, given.point_labels);
+  EXPECT_EQ(kept.triangles, given.triangles);
+  EXPECT_EQ(kept.triangle_labels, given.triangle_labels);
+  EXPECT_EQ(kept.triangles.size(), 694u);
+
+  // A measure finite on flat cells would trade cells down to numerically flat ones.
+  result = run("--source " + m + " --reference ideal --measure arap --output " + improved);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("the measure arap is finite on flat cells"), std::string::npos) << result.output;
+
   // The command line.
   for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
+        {"--source " + planar + " --reference ideal --boundary fixed --fix none", "--boundary fixed and --fix none contradict"},
+        {"--source " + m + " --reference ideal --boundary fixed --fix " + r + " --output " + temp("ideal_bad.mesh"),
+         "--boundary fixed and --fix FILE contradict"},
         {"--source " + planar + " --reference ideal --target " + planar, "no --target"},
         {"--source " + planar + " --reference ideal --boundary slide", "needs a tetrahedral mesh"},
         {"--source " + planar + " --reference regular", "--reference is ideal"},

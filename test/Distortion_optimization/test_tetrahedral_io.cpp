@@ -177,6 +177,21 @@ TEST(Medit, ReadsCGALSphere)
   EXPECT_EQ(s.cells.front(), (std::array<std::size_t, 4>{668, 308, 482, 628}));
   EXPECT_EQ(s.cells.back(), (std::array<std::size_t, 4>{230, 406, 94, 755}));
   for(int label : s.labels) EXPECT_EQ(label, 1);
+  // The vertices' references and the boundary triangles (CGAL's surface patches) are kept, and
+  // written back: a map's output keeps them.
+  ASSERT_EQ(s.point_labels.size(), 757u);
+  EXPECT_EQ(s.point_labels.front(), 2);
+  ASSERT_EQ(s.triangles.size(), 694u);
+  ASSERT_EQ(s.triangle_labels.size(), 694u);
+  const std::string copy = temp("sphere_copy.mesh");
+  IO::write_MEDIT_soup(copy, s);
+  const IO::Tetrahedron_soup t = IO::read_tetrahedron_soup(copy);
+  EXPECT_EQ(t.points, s.points);
+  EXPECT_EQ(t.cells, s.cells);
+  EXPECT_EQ(t.labels, s.labels);
+  EXPECT_EQ(t.point_labels, s.point_labels);
+  EXPECT_EQ(t.triangles, s.triangles);
+  EXPECT_EQ(t.triangle_labels, s.triangle_labels);
 }
 
 TEST(Medit, SkipsOtherSectionsAcceptsAnyCaseCommentsAndValuesSplitOverLines)
@@ -319,6 +334,13 @@ TEST(Medit, RejectsIndicesOutOfRangeAndRepeatedVertices)
                   "bad.mesh:11: tetrahedron 1 has vertex index 5 out of range (1 to 4)");
   EXPECT_REJECTED(header + four_vertices + "Tetrahedra 1\n1 2 -3 4 1\n", "bad.mesh:10: tetrahedron 0 has vertex index -3 out of range");
   EXPECT_REJECTED(header + four_vertices + "Tetrahedra 1\n1 2 3 2 1\n", "bad.mesh:10: tetrahedron 0 repeats vertex 2");
+  // Triangles, kept for the output: checked against the vertices once all are read.
+  EXPECT_REJECTED(header + four_vertices + "Triangles 1\n1 2 0 7\nTetrahedra 1 1 2 3 4 1\n",
+                  "bad.mesh:10: triangle 0 has vertex index 0 out of range");
+  EXPECT_REJECTED(header + four_vertices + "Triangles 1\n1 2 9 7\nTetrahedra 1 1 2 3 4 1\nEnd\n",
+                  "triangle 0 has vertex index 9 out of range (1 to 4)");
+  EXPECT_REJECTED(header + four_vertices + "Triangles 1\n1 2 3 1.5\nTetrahedra 1 1 2 3 4 1\n",
+                  "bad.mesh:10: '1.5' is not an integer");
 }
 
 TEST(Medit, RejectsSectionsOfUnknownLayout)
@@ -840,6 +862,22 @@ TEST(Off, RejectsACountLineWithTheWrongNumberOfFields)
   // Both layouts of a correct header.
   EXPECT_EQ(reader_error("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "off"), "");
   EXPECT_EQ(reader_error(triangle_off, "off"), "");
+}
+
+// The variants with values after x y z on the vertex lines (CGAL's demo data has COFF files):
+// read as OFF. Homogeneous or n-dimensional coordinates are refused.
+TEST(Off, ReadsTheVariantsWithColoursNormalsOrTextures)
+{
+  for(const std::string header : {"COFF", "NOFF", "CNOFF", "STOFF", "STCNOFF"}) {
+    std::istringstream in(header + "\n3 1 0\n0 0 0 0.1 0.2 0.3 1\n1 0 0 0.1 0.2 0.3 1\n0 1 0.5 0.1 0.2 0.3 1\n3 0 1 2\n");
+    const IO::Triangle_soup soup = IO::read_OFF(in);
+    ASSERT_EQ(soup.points.size(), 3u) << header;
+    EXPECT_EQ(soup.points[2], (std::array<double, 3>{0, 1, 0.5})) << header;
+    EXPECT_EQ(soup.cells.size(), 1u) << header;
+  }
+  EXPECT_READER_REJECTED("off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n", "bad.off:1: '4OFF' is not supported");
+  EXPECT_READER_REJECTED("off", "nOFF\n3\n3 1 0\n", "bad.off:1: 'nOFF' is not supported");
+  EXPECT_READER_REJECTED("off", "CSTOFF\n3 1 0\n", "bad.off:1: 'CSTOFF' is not supported");
 }
 
 TEST(Readers, SkipAUtf8ByteOrderMark)

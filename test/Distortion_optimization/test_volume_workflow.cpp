@@ -365,6 +365,12 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   expect_invalid([&] {
     DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100), DOP::cell_size(1., DOP::facet_distance(1e-2))));
   }, "stopped at 100 vertices");
+  // A volume thinner than the facet distance (a sphere squashed to 1e-9, whose rim's protection
+  // once grew without bound) is refused; sizes below its thickness ask for too many vertices.
+  Surface flat = icosahedron(1);
+  for(auto v : flat.vertices()) flat.point(v) = Point(flat.point(v).x(), flat.point(v).y(), 1e-9 * flat.point(v).z());
+  expect_invalid([&] { DO::mesh_interior(flat); }, "the volume is thinner (2 volume / area = 1");
+  expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9)); }, "more than 10^7");
   EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);
 }
 

@@ -16,7 +16,7 @@ namespace Distortion_optimization {
 /// default uniform vertex weights and average-volume weighting this is the volume-weighted mean.
 struct Result
 {
-  double initial_energy = 0;                 ///< energy of the start map
+  double initial_energy = 0;                 ///< energy of the start map (after the untangling, if any)
   double final_energy = 0;                   ///< energy of the returned map
   std::vector<double> energy_per_iteration;  ///< energy after each iteration (sweep)
   std::size_t iterations = 0;                ///< iterations (sweeps over the free vertices) done

@@ -651,7 +651,8 @@ h / 10.
 \returns the complex, of type `Interior_mesh<GeomTraits>::C3T3`.
 \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
 that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
-degenerate face or two faces that cross, encloses no volume, if a size is not a positive finite
+degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
+(its mean thickness, 2 volume / area, is smaller), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, or if the complex has no cell.
@@ -682,6 +683,17 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   typename Types::Domain domain(checked.surface, &random);
   if(sizes.sharp_edge_angle < 180) domain.detect_features(sizes.sharp_edge_angle);
 
+  // A domain thinner than the facet distance (its mean thickness 2 V / A, the thickness of a slab)
+  // passes Mesh_3's surface criteria with facets joining its two sides: the boundary is not
+  // recovered, and the protection of its rim's edges does not end (a sphere squashed to 1e-9).
+  const double thickness = 2 * checked.volume / checked.area;
+  if(!(thickness >= sizes.facet_distance)) {
+    char text[200];
+    std::snprintf(text, sizeof text, "the volume is thinner (2 volume / area = %.3g) than the facet distance (%.3g)",
+                  thickness, sizes.facet_distance);
+    throw Invalid_input(std::string("mesh_interior: ") + text + ": Mesh_3 would not recover its boundary; give sizes "
+                        "below its thickness (facet distance, facet size, cell size)");
+  }
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +
                        checked.area / (D::area_per_facet * sizes.facet_size * sizes.facet_size) / 2;
   const auto given_maximum = get_parameter(np, internal_np::maximum_number_of_vertices);

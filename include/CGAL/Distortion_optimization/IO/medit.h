@@ -92,7 +92,7 @@ public:
     const long long version = tokens_.integer(header_value("MeshVersionFormatted"));
     if(version < 1 || version > 4) tokens_.fail("unsupported MeshVersionFormatted " + std::to_string(version) + " (expected 1 to 4)");
 
-    bool has_dimension = false, has_vertices = false, has_tetrahedra = false;
+    bool has_dimension = false, has_vertices = false, has_tetrahedra = false, has_triangles = false;
     while(tokens_.next(t)) {
       const std::string key = to_lower(t);
       if(key == "end") {
@@ -126,14 +126,23 @@ public:
       } else if(name == "Tetrahedra") {
         if(has_tetrahedra) tokens_.fail("second Tetrahedra section");
         if(!has_vertices) tokens_.fail("Tetrahedra before Vertices");
-        read_tetrahedra();
+        read_simplices("Tetrahedra", "tetrahedron", soup_.cells, soup_.labels);
         has_tetrahedra = true;
+      } else if(name == "Triangles") {
+        if(has_triangles) tokens_.fail("second Triangles section");
+        read_simplices("Triangles", "triangle", soup_.triangles, soup_.triangle_labels);
+        has_triangles = true;
       } else {
         skip(*section);
       }
     }
     if(!has_vertices) tokens_.fail("no Vertices section");
     if(!has_tetrahedra) tokens_.fail("no Tetrahedra section");
+    for(std::size_t f = 0; f < soup_.triangles.size(); ++f)
+      for(std::size_t v : soup_.triangles[f])
+        if(v >= soup_.points.size())
+          tokens_.fail("triangle " + std::to_string(f) + " has vertex index " + std::to_string(v + 1) + " out of range (1 to " +
+                       std::to_string(soup_.points.size()) + ")");
     return std::move(soup_);
   }
 
@@ -190,36 +199,54 @@ private:
     for(long long v = 0; v < n; ++v) {
       std::array<double, 3> p;
       for(int i = 0; i < 3; ++i) p[i] = tokens_.coordinate(value("Vertices", n, v));
-      tokens_.integer(value("Vertices", n, v)); // the reference, checked but not kept
+      soup_.point_labels.push_back(reference("vertex", v, value("Vertices", n, v)));
       soup_.points.push_back(p);
     }
   }
 
-  void read_tetrahedra()
+  // Entries of k 1-based vertex indices and a reference: tetrahedra, checked against the vertices
+  // and for a repeated vertex as they are read, or triangles (the Triangles section, kept for the
+  // output), whose indices are checked once all vertices are known, and whose values are first
+  // checked to be numbers (as those of the sections skipped).
+  template <std::size_t k>
+  void read_simplices(const char* section, const char* entry, std::vector<std::array<std::size_t, k>>& simplices,
+                      std::vector<int>& labels)
   {
-    const long long n = count("Tetrahedra", 5);
-    const long long nv = static_cast<long long>(soup_.points.size());
-    soup_.cells.reserve(plausible(n, 5));
-    soup_.labels.reserve(plausible(n, 5));
+    constexpr bool tetrahedra = k == 4;
+    constexpr int values = static_cast<int>(k) + 1;
+    const long long n = count(section, values);
+    const long long nv = tetrahedra ? static_cast<long long>(soup_.points.size()) : std::numeric_limits<long long>::max();
+    simplices.reserve(plausible(n, values));
+    labels.reserve(plausible(n, values));
+    const auto next = [&](long long c) {
+      const std::string_view s = value(section, n, c);
+      if(!tetrahedra) check_number(section, s);
+      return s;
+    };
     for(long long c = 0; c < n; ++c) {
-      std::array<std::size_t, 4> tet;
-      for(int i = 0; i < 4; ++i) {
-        const std::string_view s = value("Tetrahedra", n, c);
+      std::array<std::size_t, k> simplex;
+      for(std::size_t i = 0; i < k; ++i) {
+        const std::string_view s = next(c);
         const long long index = tokens_.integer(s);
         if(index < 1 || index > nv)
-          tokens_.fail("tetrahedron " + std::to_string(c) + " has vertex index " + std::string(s) + " out of range (1 to " +
-                       std::to_string(nv) + ")");
-        tet[i] = static_cast<std::size_t>(index - 1);
-        for(int j = 0; j < i; ++j)
-          if(tet[j] == tet[i]) tokens_.fail("tetrahedron " + std::to_string(c) + " repeats vertex " + std::string(s));
+          tokens_.fail(std::string(entry) + " " + std::to_string(c) + " has vertex index " + std::string(s) + " out of range" +
+                       (tetrahedra ? " (1 to " + std::to_string(nv) + ")" : std::string()));
+        simplex[i] = static_cast<std::size_t>(index - 1);
+        for(std::size_t j = 0; tetrahedra && j < i; ++j)
+          if(simplex[j] == simplex[i]) tokens_.fail(std::string(entry) + " " + std::to_string(c) + " repeats vertex " + std::string(s));
       }
-      const std::string_view s = value("Tetrahedra", n, c);
-      const long long label = tokens_.integer(s);
-      if(label < std::numeric_limits<int>::min() || label > std::numeric_limits<int>::max())
-        tokens_.fail("tetrahedron " + std::to_string(c) + " has reference " + std::string(s) + " out of range");
-      soup_.cells.push_back(tet);
-      soup_.labels.push_back(static_cast<int>(label));
+      simplices.push_back(simplex);
+      labels.push_back(reference(entry, c, next(c)));
     }
+  }
+
+  // A reference (label), as an int.
+  int reference(const char* entry, long long index, std::string_view s)
+  {
+    const long long label = tokens_.integer(s);
+    if(label < std::numeric_limits<int>::min() || label > std::numeric_limits<int>::max())
+      tokens_.fail(std::string(entry) + " " + std::to_string(index) + " has reference " + std::string(s) + " out of range");
+    return static_cast<int>(label);
   }
 
   void skip(const Medit_section& section)
@@ -243,8 +270,9 @@ private:
 /// Reads a 3D ASCII Medit mesh: "MeshVersionFormatted v" (1 to 4), "Dimension 3", "Vertices" n
 /// then n entries "x y z ref", "Tetrahedra" n then n entries "a b c d ref" (1-based), and an
 /// optional "End". Keywords are case-insensitive, '#' starts a comment, values may be spread
-/// over lines in any way, and a UTF-8 byte order mark at the start is skipped. The other
-/// sections of the format with a fixed layout (Edges, Triangles, Quadrilaterals, Corners, Ridges,
+/// over lines in any way, and a UTF-8 byte order mark at the start is skipped. The vertices'
+/// references and a "Triangles" section (entries "a b c ref") are kept in the soup. The other
+/// sections of the format with a fixed layout (Edges, Quadrilaterals, Corners, Ridges,
 /// Required*, Normals, Tangents, NormalAt*, TangentAt*, EdgesP2, TrianglesP2, QuadrilateralsQ2,
 /// AngleOfCornerBound, and empty Prisms, Pyramids or Hexahedra) are checked and skipped. `name`
 /// is used in error messages.
@@ -278,17 +306,27 @@ inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
 
 /// \ingroup PkgDistortionOptimizationIO
 /// Writes `soup` as an ASCII Medit file (MeshVersionFormatted 1, Dimension 3, Vertices with
-/// reference 0, Tetrahedra with `soup.labels` as references, or 1 for all when `labels` is empty,
-/// End), atomically, with 17 significant digits so that `read_MEDIT_soup()` gives back the same
-/// doubles.
-/// \throws Invalid_input (before anything is written) if `labels` is neither empty nor one per
-/// tetrahedron, a coordinate is not finite, or a tetrahedron has an index out of range or repeats
-/// a vertex, i.e. whenever `read_MEDIT_soup()` would reject the file; or if the file cannot be written.
+/// `soup.point_labels` as references, or 0 for all when it is empty, Triangles with
+/// `soup.triangle_labels` when `soup.triangles` is not empty, Tetrahedra with `soup.labels` as
+/// references, or 1 for all when `labels` is empty, End), atomically, with the shortest decimals
+/// that `read_MEDIT_soup()` reads back as the same doubles.
+/// \throws Invalid_input (before anything is written) if `labels`, `point_labels` or
+/// `triangle_labels` is neither empty nor one per tetrahedron, vertex or triangle, a coordinate is
+/// not finite, a triangle or a tetrahedron has an index out of range, or a tetrahedron repeats a
+/// vertex, i.e. whenever `read_MEDIT_soup()` would reject the file; or if the file cannot be written.
 inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& soup)
 {
-  if(!soup.labels.empty() && soup.labels.size() != soup.cells.size())
-    throw Invalid_input(path + ": " + std::to_string(soup.labels.size()) + " labels for " +
-                        std::to_string(soup.cells.size()) + " tetrahedra");
+  const auto check_labels = [&](std::size_t labels, std::size_t entries, const char* what) {
+    if(labels != 0 && labels != entries)
+      throw Invalid_input(path + ": " + std::to_string(labels) + " labels for " + std::to_string(entries) + " " + what);
+  };
+  check_labels(soup.labels.size(), soup.cells.size(), "tetrahedra");
+  check_labels(soup.point_labels.size(), soup.points.size(), "vertices");
+  check_labels(soup.triangle_labels.size(), soup.triangles.size(), "triangles");
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for(std::size_t v : soup.triangles[f])
+      if(v >= soup.points.size())
+        throw Invalid_input(path + ": triangle " + std::to_string(f) + " has vertex index " + std::to_string(v) + " out of range");
   for(std::size_t v = 0; v < soup.points.size(); ++v)
     for(double x : soup.points[v])
       if(!std::isfinite(x)) throw Invalid_input(path + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
@@ -305,7 +343,7 @@ inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& so
   // Formatted into memory with std::to_chars (the shortest decimals that read back the same
   // doubles), then written at once: through the stream's locale, each number took a virtual call.
   std::string text;
-  text.reserve(80 * soup.points.size() + 40 * soup.cells.size() + 64);
+  text.reserve(80 * soup.points.size() + 40 * soup.cells.size() + 32 * soup.triangles.size() + 64);
   char number[32];
   const auto put = [&](auto x, char after) {
     text.append(number, std::to_chars(number, number + sizeof number, x).ptr);
@@ -313,9 +351,17 @@ inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& so
   };
   text += "MeshVersionFormatted 1\nDimension 3\nVertices\n";
   put(soup.points.size(), '\n');
-  for(const auto& p : soup.points) {
-    for(double x : p) put(x, ' ');
-    text += "0\n";
+  for(std::size_t v = 0; v < soup.points.size(); ++v) {
+    for(double x : soup.points[v]) put(x, ' ');
+    put(soup.point_labels.empty() ? 0 : soup.point_labels[v], '\n');
+  }
+  if(!soup.triangles.empty()) {
+    text += "Triangles\n";
+    put(soup.triangles.size(), '\n');
+    for(std::size_t f = 0; f < soup.triangles.size(); ++f) {
+      for(std::size_t v : soup.triangles[f]) put(v + 1, ' ');
+      put(soup.triangle_labels.empty() ? 0 : soup.triangle_labels[f], '\n');
+    }
   }
   text += "Tetrahedra\n";
   put(soup.cells.size(), '\n');

@@ -17,7 +17,10 @@ namespace IO {
 /// \ingroup PkgDistortionOptimizationIO
 /// Vertices and cells of `k` vertices each (0-based indices) as they appear in a file, with a
 /// label per cell where the format has one (Medit's reference of a tetrahedron, where CGAL writes
-/// the subdomain index), else no label. Vertex references are not kept.
+/// the subdomain index), else no label.
+/// For Medit files, also the vertices' references and the Triangles section (0-based, with its
+/// references: CGAL writes the surface patch indices there), carried through to the output of a
+/// map of the same vertices; empty otherwise.
 /// For OBJ files, also the texture coordinates ("vt u v") and, when the faces refer to them
 /// ("f a/ta b/tb c/tc"), each cell's texture indices (0-based; `std::size_t(-1)` for a face vertex
 /// without one); both empty otherwise.
@@ -27,6 +30,9 @@ struct Simplex_soup
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, k>> cells;
   std::vector<int> labels;
+  std::vector<int> point_labels;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<int> triangle_labels;
   std::vector<std::array<double, 2>> texture_coordinates;
   std::vector<std::array<std::size_t, k>> cell_texture_indices;
 };

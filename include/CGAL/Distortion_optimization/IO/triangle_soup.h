@@ -97,7 +97,9 @@ inline long long obj_index(long long index, std::size_t count)
 /// \ingroup PkgDistortionOptimizationIO
 /// Reads an OFF file of triangles ("OFF" and the three counts "nv nf ne" on its line or the next,
 /// vertex lines "x y z [...]", face lines "3 i j k [...]", the optional values being numbers such
-/// as colors). A UTF-8 byte order mark is skipped. `name` is used in error messages.
+/// as colors). The header may also be that of a variant with texture coordinates, colours or
+/// normals on the vertex lines (STOFF, COFF, NOFF, CNOFF, ...), whose values are skipped. A UTF-8
+/// byte order mark is skipped. `name` is used in error messages.
 /// \throws Invalid_input naming the line for a missing header or count, a count line without
 /// exactly three counts, a line longer than 1 MiB, a truncated file, a token that is not a number
 /// (a NUL byte or other garbage in it included), a non-finite coordinate, a face that is not a
@@ -108,11 +110,19 @@ inline Triangle_soup read_OFF(std::istream& in, const std::string& name = "OFF i
   std::vector<std::string> t;
   if(!reader.next(t)) reader.fail("empty file");
   std::size_t first = 0;   // where the counts start: "OFF nv nf ne", or "OFF" then "nv nf ne"
-  if(t[0] == "OFF") {
+  if(t[0].size() >= 3 && t[0].compare(t[0].size() - 3, 3, "OFF") == 0) {
+    // The variants whose vertex lines add values after x y z: texture (ST), colour (C), normal
+    // (N), in that order (COFF, NOFF, STCNOFF, ...); the optional values are skipped anyway.
+    // Homogeneous (4OFF) and n-dimensional (nOFF) coordinates would be misread.
+    const std::string prefix = t[0].substr(0, t[0].size() - 3);
+    std::size_t known = prefix.compare(0, 2, "ST") == 0 ? 2 : 0;
+    if(known < prefix.size() && prefix[known] == 'C') ++known;
+    if(known < prefix.size() && prefix[known] == 'N') ++known;
+    if(known != prefix.size())
+      reader.fail("'" + t[0] + "' is not supported: only OFF and its variants with texture, colour or normal values "
+                  "(STOFF, COFF, NOFF, ...)");
     if(t.size() > 1) first = 1;
     else if(!reader.next(t)) reader.fail("missing vertex and face counts");
-  } else if(t[0].size() > 3 && t[0].compare(t[0].size() - 3, 3, "OFF") == 0) {
-    reader.fail("only plain OFF is supported, not '" + t[0] + "'");
   }
   if(t.size() < first + 2) reader.fail("missing vertex and face counts");
   if(t.size() != first + 3)

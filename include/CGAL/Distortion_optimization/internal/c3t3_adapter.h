@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -134,6 +135,7 @@ public:
     vertex_of.reserve(tr.number_of_vertices());
     on_boundary.reserve(tr.number_of_vertices());
     double largest = 0;
+    Vector<3> low = Vector<3>::Constant(std::numeric_limits<double>::infinity()), high = -low;  // the source's box
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       typename Simplicial_map<3>::Cell cell;
       std::array<Vector<3>, 4> x;
@@ -144,6 +146,8 @@ public:
         x[i] = Vector<3>(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
         p[i] = P(x[i][0], x[i][1], x[i][2]);
         largest = std::max(largest, x[i].cwiseAbs().maxCoeff());
+        low = low.cwiseMin(x[i]);
+        high = high.cwiseMax(x[i]);
       }
       if(traits.orientation_3_object()(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE)
         throw Invalid_input("source cell " + std::to_string(cell_of.size()) + " of the complex is not positively oriented "
@@ -161,9 +165,7 @@ public:
       throw Invalid_input("the complex has no cell");
     for(const Vector<3>& y : map.target) largest = std::max(largest, y.cwiseAbs().maxCoeff());
     scale = coordinate_scale(largest);
-    double source_size = 0;   // the largest source edge: a cell's size, near enough the mesh's for the test
-    for(const auto& cell : cells) source_size = std::max(source_size, cell.second.cwiseAbs().maxCoeff());
-    check_comparable_sizes(source_size, largest_extent(map.target));
+    check_comparable_sizes((high - low).maxCoeff(), largest_extent(map.target));
     for(Vector<3>& y : map.target) y *= scale;
     for(const auto& [cell, Dm] : cells) map.add_cell(cell, scale * Dm, +1);
   }

@@ -23,12 +23,13 @@ namespace internal {
 
 // vertex_weights: omega(v), empty for omega = 1. per_cell (optional) receives D(J_c). The traits'
 // orientation predicates count the inverted cells; inverted_per_cell (optional) receives 1 for
-// each of them, 0 for the others.
+// each of them, 0 for the others. A map that is not `oriented` (surface to surface) has none, and
+// the predicates are skipped.
 template <int n, class Measure, class GeomTraits>
 Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& measure, const GeomTraits& traits,
                                const std::vector<double>& vertex_weights,
                                std::vector<double>* per_cell = nullptr,
-                               std::vector<unsigned char>* inverted_per_cell = nullptr)
+                               std::vector<unsigned char>* inverted_per_cell = nullptr, bool oriented = true)
 {
   Distortion_statistics s;
   s.cells = map.number_of_cells();
@@ -55,7 +56,7 @@ Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& meas
     sum_volume += omega * map.rest_volume[c];
     s.min = std::min(s.min, d);
     s.max = std::max(s.max, d);
-    if(is_inverted(map, c, traits)) {
+    if(oriented && is_inverted(map, c, traits)) {
       ++s.inverted_cells;
       if(inverted_per_cell) (*inverted_per_cell)[c] = 1;
     }

@@ -133,9 +133,9 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
     }
     if(!(from.determinant() * to.determinant() > 0)) return false;
     const Matrix<2> A = to * from.inverse();
+    if(!A.allFinite()) return false;
     const Vector<2> origin = x[constrained[0]];
     for(Vector<2>& y : x) y = p.map.target[constrained[0]] + A * (y - origin);
-    if(!A.allFinite()) return false;
   } else if(constrained.size() == 2) {
     const Vector<2> from = x[constrained[1]] - x[constrained[0]];
     const Vector<2> to = p.map.target[constrained[1]] - p.map.target[constrained[0]];
