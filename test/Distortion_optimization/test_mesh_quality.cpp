@@ -292,8 +292,11 @@ TEST(MeshQuality, SlidingDoesNotDependOnUnits)
       const Point_3& s = start.at(v);
       if(interior.count(v)) continue;
       moved += p != s;
-      for(int k = 0; k < 3; ++k)   // on the face of the cube where they started
-        if(s[k] == 0 || s[k] == 4 * scale) EXPECT_NEAR(p[k], s[k], 1e-12 * scale) << scale;
+      for(int k = 0; k < 3; ++k) {   // on the face of the cube where they started
+        if(s[k] == 0 || s[k] == 4 * scale) {
+          EXPECT_NEAR(p[k], s[k], 1e-12 * scale) << scale;
+        }
+      }
     }
     EXPECT_GT(moved, 10u) << scale;
   }
