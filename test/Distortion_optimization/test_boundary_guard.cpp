@@ -192,7 +192,7 @@ void check_random_moves(Map<n>& m, DOI::Boundary_guard<n>& guard, const std::vec
     move(v);
     const bool injective = expected(v);
     ASSERT_EQ(guard.accepts_move(v, m.target), injective) << "move " << k;
-    ASSERT_EQ(guard.is_injective(m.target, nullptr, guard.keeps_clearance()), injective) << "move " << k;
+    ASSERT_EQ(guard.is_injective(m.target, nullptr, guard.keeps_clearance() ? 1. : 0.), injective) << "move " << k;
     if(injective) {
       guard.commit_move(v, m.target);
       ++accepted;
@@ -489,7 +489,7 @@ TEST(BoundaryGuard, TrianglesSharingAnEdgeOrAVertex)
   EXPECT_TRUE(brute_force_injective(faces, u));
   u[4] = Vector<3>(0.5, -1e-10, 0);   // clear of it
   EXPECT_TRUE(pair.accepts_move(4, u));
-  EXPECT_TRUE(pair.is_injective(u, nullptr, true));
+  EXPECT_TRUE(pair.is_injective(u, nullptr, 1.));
 }
 
 TEST(BoundaryGuard, AgreesWithBruteForceOnRandomTetBoundaryMoves)

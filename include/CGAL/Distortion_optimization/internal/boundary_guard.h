@@ -121,7 +121,7 @@ public:
     // A map whose boundary is already closer to itself than that (given so) keeps the exact tests.
     // A quarter of the clearance here: distances so small are computed to a few percent, and a
     // pair that a move kept just beyond the clearance must not turn it off.
-    keeps_clearance_ = is_injective(target, nullptr, true, 0.25);
+    keeps_clearance_ = is_injective(target, nullptr, 0.25);
   }
 
   // Whether moves keep faces apart by their clearance (see the header), as the map had them at the
@@ -187,10 +187,11 @@ public:
 
   // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests. If
   // `crossing` is given, it receives the vertices of every face that is degenerate or meets another
-  // improperly (not only the first found), so that a caller may hold them back. With `with_clearance`
-  // (a move's check), faces closer than `fraction` of their clearance() count as meeting.
+  // improperly (not only the first found), so that a caller may hold them back. With a positive
+  // `clearance_fraction` (a move's check: 1), faces closer than that fraction of their clearance()
+  // count as meeting.
   bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr,
-                    bool with_clearance = false, double fraction = 1) const
+                    double clearance_fraction = 0) const
   {
     using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
     if(crossing) crossing->clear();
@@ -210,7 +211,7 @@ public:
         continue;
       }
       Box b = face_box(f, target);
-      if(with_clearance) b = grown(b, fraction * clearance(b));
+      b = grown(b, clearance_fraction * clearance(b));
       double lo[n], hi[n];
       for(int i = 0; i < n; ++i) { lo[i] = b.min()[i]; hi[i] = b.max()[i]; }
       boxes.emplace_back(lo, hi, f);
@@ -218,7 +219,7 @@ public:
     // A callback cannot stop box_self_intersection_d: without `crossing`, it skips the tests once
     // one crossing is found.
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box_d& a, const Box_d& b) {
-      if((injective || crossing) && improper(a.info(), b.info(), target, with_clearance ? fraction : 0.)) {
+      if((injective || crossing) && improper(a.info(), b.info(), target, clearance_fraction)) {
         injective = false;
         report(a.info());
         report(b.info());
@@ -366,8 +367,7 @@ private:
       const K::Point_2 s = point(a[0], t), q = point(a[1], t), r = point(b[1], t);
       if(shared == 0) {
         const K::Segment_2 e(s, q), g(r, point(b[0], t));
-        return CGAL::do_intersect(e, g) ||
-               (clearance_fraction > 0 && too_close(e, g, clearance_fraction * clearance(face_box(fi, t).merged(face_box(gi, t)))));
+        return CGAL::do_intersect(e, g) || too_close(e, g, fi, gi, t, clearance_fraction);
       }
       // (s, q) and (s, r) meet beyond s iff q and r lie on the same ray from s.
       return CGAL::orientation(s, q, r) == CGAL::COLLINEAR &&
@@ -378,8 +378,7 @@ private:
       const K::Point_3 b0 = point(b[0], t), b1 = point(b[1], t), b2 = point(b[2], t);
       if(shared == 0) {
         const K::Triangle_3 e(a0, a1, a2), g(b0, b1, b2);
-        return CGAL::do_intersect(e, g) ||
-               (clearance_fraction > 0 && too_close(e, g, clearance_fraction * clearance(face_box(fi, t).merged(face_box(gi, t)))));
+        return CGAL::do_intersect(e, g) || too_close(e, g, fi, gi, t, clearance_fraction);
       }
       // Sharing edge a0a1: unless coplanar the planes meet in that edge's line only; coplanar, the
       // triangles overlap iff a2 and b2 are not strictly on opposite sides of it.
@@ -398,10 +397,14 @@ private:
     }
   }
 
-  // Two faces (segments or triangles) at most d apart.
+  // Whether faces fi and gi (e and g as segments or triangles) are at most `fraction` of their
+  // clearance() apart (never with a zero fraction).
   template <class Face_object>
-  static bool too_close(const Face_object& e, const Face_object& g, double d)
+  bool too_close(const Face_object& e, const Face_object& g, std::uint32_t fi, std::uint32_t gi,
+                 const std::vector<Vector<n>>& t, double fraction) const
   {
+    if(!(fraction > 0)) return false;
+    const double d = fraction * clearance(face_box(fi, t).merged(face_box(gi, t)));
     return !(CGAL::squared_distance(e, g) > d * d);
   }
 };

@@ -566,7 +566,7 @@ private:
     const std::vector<std::uint32_t>& moving = system_.moving_cells();
     const auto moving_cell = [&](std::size_t i) { return moving[i]; };
     auto* guard = state_.boundary_guard();
-    const auto boundary_ok = [&] { return !guard || guard->is_injective(x, nullptr, guard->keeps_clearance()); };
+    const auto boundary_ok = [&] { return !guard || guard->is_injective(x, nullptr, guard->keeps_clearance() ? 1. : 0.); };
     const auto place = [&](double length) {
       state_.workers().for_each(x.size(), 4096, [&](std::size_t v) {
         if(!p_.is_free[v]) return;

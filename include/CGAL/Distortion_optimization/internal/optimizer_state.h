@@ -133,8 +133,8 @@ public:
   // cell_at(count - 1) have just moved, the energy was e0. Accepts, and commits their values, if
   // the energy becomes at most e0 + bound (Armijo) by a decrease above the rounding error of e0
   // and no valid cell flipped or flattened (exact predicate) nor a robust one became fragile, and
-  // then `check` (e.g. the boundary guard's) agrees. A local trial (on_workers false) may run concurrently with others on
-  // disjoint rings; a global one spreads its cells over the workers.
+  // then `check` (e.g. the boundary guard's) agrees. A local trial (on_workers false) may run
+  // concurrently with others on disjoint rings; a global one spreads its cells over the workers.
   template <class CellAt, class Check = bool (*)()>
   bool accept_trial(std::size_t count, const CellAt& cell_at, double e0, double bound, bool on_workers = false,
                     const Check& check = [] { return true; })
