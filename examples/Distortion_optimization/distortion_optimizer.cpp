@@ -274,20 +274,6 @@ std::vector<double> red_where_inverted(std::vector<double> values, const std::ve
   return values;
 }
 
-// The triangles of a planar mesh oriented against the mesh as a whole (the sign of its total
-// area; flat ones included), as mesh_quality() counts them: drawn red in its quality picture.
-std::vector<bool> inverted_triangles(const std::vector<std::array<double, 3>>& points,
-                                     const std::vector<std::array<std::size_t, 3>>& cells)
-{
-  const auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
-  double area = 0;
-  for(const auto& t : cells) area += CGAL::area(point(t[0]), point(t[1]), point(t[2]));
-  std::vector<bool> inverted;
-  for(const auto& t : cells)
-    inverted.push_back(CGAL::orientation(point(t[0]), point(t[1]), point(t[2])) != (area >= 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN));
-  return inverted;
-}
-
 // --svg (the map's cells coloured by `value_name`, beside the source's with --svg-both) and
 // --energy-plot (the start's energy, then each iteration's).
 void write_pictures(const Command_line& c, DO::IO::Svg_panel source, DO::IO::Svg_panel map, const std::string& value_name,
@@ -486,10 +472,10 @@ int run_triangles(const Command_line& c)
     if(c.ideal())
       write_pictures(c, DO::IO::triangle_panel("before", points, output.cells,
                                                red_where_inverted(DO::radius_ratios(points, output.cells),
-                                                                  inverted_triangles(points, output.cells))),
+                                                                  DO::inverted_triangles(points, output.cells))),
                      DO::IO::triangle_panel("after", output.points, output.cells,
                                             red_where_inverted(DO::radius_ratios(output.points, output.cells),
-                                                               inverted_triangles(output.points, output.cells))),
+                                                               DO::inverted_triangles(output.points, output.cells))),
                      "radius ratio", measure_name, r);
     else {
       const std::vector<double> shown = red_where_inverted(values, inverted);

@@ -1156,6 +1156,23 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
   EXPECT_EQ(kept.triangle_labels, given.triangle_labels);
   EXPECT_EQ(kept.triangles.size(), 694u);
 
+  // Scaled by a power of two (exactly), the sphere slides to the same result scaled: the ideal
+  // cells' cube roots once differed in the last place, and the sliding run in the fifth digit.
+  IO::Tetrahedron_soup unit_result;
+  for(double scale : {1., 2., 0x1p-10}) {
+    IO::Tetrahedron_soup scaled = given;
+    for(auto& p : scaled.points)
+      for(double& x : p) x *= scale;
+    const std::string in = temp("ideal_sphere_in.mesh"), out = temp("ideal_sphere_slid.mesh");
+    IO::write_MEDIT_soup(in, scaled);
+    ASSERT_EQ(run("--source " + in + " --reference ideal --boundary slide --iterations 4 --output " + out).status, 0);
+    IO::Tetrahedron_soup slid = IO::read_tetrahedron_soup(out);
+    for(auto& p : slid.points)
+      for(double& x : p) x /= scale;
+    if(scale == 1) unit_result = slid;
+    EXPECT_EQ(slid.points, unit_result.points) << scale;
+  }
+
   // A measure finite on flat cells would trade cells down to numerically flat ones.
   result = run("--source " + m + " --reference ideal --measure arap --output " + improved);
   EXPECT_EQ(result.status, 1) << result.output;

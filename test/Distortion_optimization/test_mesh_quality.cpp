@@ -101,6 +101,25 @@ TEST(MeshQuality, StatisticsOfKnownShapes)
   EXPECT_EQ(q.inverted_cells, 0u);
 }
 
+TEST(MeshQuality, InvertedTrianglesOfASoupAreThoseMeshQualityCounts)
+{
+  // Two clockwise triangles (the soup's orientation), one counterclockwise, one flat; then the
+  // counterclockwise one enlarged until it outweighs the others, so that the other three count.
+  std::vector<std::array<double, 3>> points = {{0, 0, 0}, {0, 1, 7}, {1, 0, 0}, {3, 0, 0}, {3, 2, 0}, {5, 0, 0},
+                                               {6, 0, 0}, {7, 0, 0}, {8, 0, 0}, {9, 0, 0}, {9, 1, 0}, {10, 0, 0}};
+  const std::vector<std::array<std::size_t, 3>> cells = {{0, 1, 2}, {3, 4, 5}, {9, 11, 10}, {6, 7, 8}};
+  EXPECT_EQ(DO::inverted_triangles(points, cells), std::vector<bool>({false, false, true, true}));
+  Mesh2 m;
+  for(const auto& c : cells) {
+    const auto at = [&](std::size_t v) { return m.add_vertex(Point_2(points[v][0], points[v][1])); };
+    m.add_face(at(c[0]), at(c[1]), at(c[2]));
+  }
+  EXPECT_EQ(DO::mesh_quality(m, m.points()).inverted_cells, 2u);
+  points[10] = {9, 6, 0};
+  points[11] = {15, 0, 0};
+  EXPECT_EQ(DO::inverted_triangles(points, cells), std::vector<bool>({true, true, false, true}));
+}
+
 TEST(MeshQuality, PerturbedEquilateralGridReturnsToTheGrid)
 {
   const Mesh2 grid = equilateral_grid(8);

@@ -288,6 +288,17 @@ TEST(MinimizeDistortion, InvertedStartIsRejectedForANormalizedMeasure)
     EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
   }
   EXPECT_EQ(m.uv[v], before);   // nothing written
+  // A measure that is not a number on some cell: the message blames it, not an overflow.
+  const auto nan_when_stretched = DO::make_measure(
+    [](const auto& s) { return s[0] > 1.05 ? std::numeric_limits<double>::quiet_NaN() : (s.array() - 1.).square().sum(); },
+    [](const auto& s) { return (2. * (s.array() - 1.)).matrix().eval(); }, "nan_when_stretched", false, false);
+  try {
+    CGAL::minimize_distortion(m.mesh, m.uv, nan_when_stretched);
+    ADD_FAILURE() << "a start where the measure is NaN was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("is not a number (the measure 'nan_when_stretched' gives NaN"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(m.uv[v], before);
   // ARAP is finite there: the run goes on, and flips nothing that was not flipped.
   const std::size_t flipped = count_flipped(m.mesh, m.uv);
   const auto r = CGAL::minimize_distortion(m.mesh, m.uv, DO::ARAP());
@@ -337,6 +348,12 @@ TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
     auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
     DO::initial_parameterization(mesh, uv);
     ASSERT_EQ(count_flipped(mesh, uv), 0u) << name;
+    // With a square border too: CGAL's runs clockwise, and every face came out mirrored.
+    auto square = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:square").first;
+    DO::initial_parameterization(mesh, square, DO::Initial_map::TUTTE, DO::Border_shape::SQUARE);
+    EXPECT_EQ(count_flipped(mesh, square), 0u) << name;
+    DO::initial_parameterization(mesh, square, DO::Initial_map::DISCRETE_CONFORMAL, DO::Border_shape::SQUARE);
+    EXPECT_LT(count_flipped(mesh, square), mesh.number_of_faces() / 10) << name;
     auto tutte = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:tutte").first;
     for(auto v : mesh.vertices()) tutte[v] = uv[v];
 

@@ -156,6 +156,11 @@ TEST(Medit, WriterRejectsWhatTheReaderWouldRejectAndWritesNothing)
   s = two_tetrahedra();
   s.points[4][2] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
+  s = two_tetrahedra();   // boundary triangles: an index out of range, a repeated vertex
+  s.triangles = {{0, 1, 5}};
+  EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
+  s.triangles = {{0, 1, 1}};
+  EXPECT_THROW(IO::write_MEDIT_soup(path, s), DO::Invalid_input);
   EXPECT_FALSE(exists(path));
   EXPECT_EQ(leftovers(path), 0u);
 }

@@ -4,6 +4,7 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/untangle.h>
 #include <CGAL/minimize_distortion.h>
 
@@ -249,5 +250,36 @@ TEST(Untangle, ADiskWhoseRoundsEndTangledStartsAgainFromItsTutteEmbedding)
     const double radius = std::sqrt(CGAL::squared_distance(centre, uv[border[0]]));
     EXPECT_GT(radius, 0.);
     for(auto v : border) EXPECT_NEAR(std::sqrt(CGAL::squared_distance(centre, uv[v])), radius, 1e-9 * radius);
+  }
+}
+
+// A border fixed on a convex polygon whose inside the rounds do not untangle (one inner vertex of
+// lion-head's Tutte map moved far outside the disk: they ended with 8 cells inverted) is untangled
+// from Tutte's embedding with the border where it is, on the circle and on a square.
+TEST(Untangle, ABorderFixedOnAConvexPolygonIsUntangledFromTutteEmbeddingThere)
+{
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", mesh));
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  for(const DO::Border_shape shape : {DO::Border_shape::CIRCLE, DO::Border_shape::SQUARE}) {
+    DO::initial_parameterization(mesh, uv, DO::Initial_map::TUTTE, shape);
+    ASSERT_EQ(count_flipped(mesh, uv), 0u);
+    const std::vector<Point_2> tutte = targets_of(mesh, uv);
+    double radius = 0;
+    for(auto v : mesh.vertices()) radius = std::max(radius, std::abs(uv[v].x()) + std::abs(uv[v].y()));
+    Mesh3::Vertex_index inner;
+    for(auto v : mesh.vertices())
+      if(!mesh.is_border(v)) inner = v;
+    uv[inner] = Point_2(uv[inner].x() + 100 * radius, uv[inner].y());
+    const std::size_t tangled = count_flipped(mesh, uv);
+    ASSERT_GT(tangled, 0u);
+    const DO::Untangle_result r = DO::untangle(mesh, uv);
+    EXPECT_EQ(r.inverted_before, tangled);
+    EXPECT_EQ(r.inverted_after, 0u);
+    EXPECT_EQ(count_flipped(mesh, uv), 0u);
+    for(auto v : mesh.vertices())
+      if(mesh.is_border(v)) {
+        EXPECT_EQ(uv[v], tutte[v.idx()]);
+      }
   }
 }

@@ -282,6 +282,7 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
   using Cell_handle = typename Tr::Cell_handle;
   auto& tds = tr.tds();
   tds.clear();   // not tr.clear(), which would create an infinite vertex of a 0-dimensional triangulation
+  tds.set_dimension(3);   // before any adjacency: set_adjacency() asserts that the facet index is within it
   const Vertex_handle infinite = tds.create_vertex();
   infinite->set_dimension(-1);
   tr.set_infinite_vertex(infinite);
@@ -333,7 +334,6 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
                           ", " + std::to_string(edges[e].first & 0xffffffffu) + ")");
     tds.set_adjacency(edges[e].second.first, edges[e].second.second, edges[e + 1].second.first, edges[e + 1].second.second);
   }
-  tds.set_dimension(3);
   return handles;
 }
 

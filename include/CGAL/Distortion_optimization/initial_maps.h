@@ -71,7 +71,10 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
 /// disk `tm` (a `FaceListGraph` of triangles with one border): the longest border is mapped to a
 /// circle or a square by arc length, the inner vertices by `kind`; then the map is scaled about
 /// the origin so that its area is the surface's (isometric measures compare lengths, and CGAL's
-/// parameterizers map to the unit square whatever the surface's size). Coordinates of any magnitude
+/// parameterizers map to the unit square whatever the surface's size), and mirrored (v to -v)
+/// where it reverses the faces' orientation as a whole, as CGAL's square border does: the
+/// triangles of a Tutte map are then all positively oriented, a valid start for
+/// `CGAL::minimize_distortion()`. Coordinates of any magnitude
 /// are accepted: a mesh far from unit size is parameterized scaled by a power of two.
 /// \throws Invalid_input if `tm` is empty, has no border, or CGAL's parameterizer fails (e.g. the
 /// mesh is not a topological disk).
@@ -114,19 +117,23 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind
   if(border == Border_shape::CIRCLE) run(Circle());
   else run(Square());
 
-  double surface_area = 0, uv_area = 0;
+  // The areas, and the map's orientation: CGAL's square border runs clockwise where its circle runs
+  // counterclockwise, and a map that mirrors every face would be inverted everywhere.
+  double surface_area = 0, uv_area = 0, signed_uv_area = 0;
   const auto vpm = get(CGAL::vertex_point, tm);
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
     const auto a = source(h, tm), b = target(h, tm), c = target(next(h, tm), tm);
     surface_area += std::sqrt(CGAL::to_double(CGAL::squared_area(get(vpm, a), get(vpm, b), get(vpm, c))));
-    uv_area += std::abs(CGAL::to_double(CGAL::area(get(uv, a), get(uv, b), get(uv, c))));
+    const double area = CGAL::to_double(CGAL::area(get(uv, a), get(uv, b), get(uv, c)));
+    uv_area += std::abs(area);
+    signed_uv_area += area;
   }
   if(!(uv_area > 0) || !(surface_area > 0)) throw Invalid_input("the parameterization has no area");
-  const double s = std::sqrt(surface_area / uv_area);
+  const double s = std::sqrt(surface_area / uv_area), mirror = signed_uv_area < 0 ? -1. : 1.;
   for(auto v : vertices(tm)) {
     const Point_2 p = get(uv, v);
-    put(uv, v, Point_2(s * CGAL::to_double(p.x()), s * CGAL::to_double(p.y())));
+    put(uv, v, Point_2(s * CGAL::to_double(p.x()), mirror * s * CGAL::to_double(p.y())));
   }
 }
 

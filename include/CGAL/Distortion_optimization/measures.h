@@ -489,7 +489,8 @@ struct Product : measures_internal::Pair_of_measures<A, B>
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
-/// Weighted sum wa * A + wb * B of two measures. Normalized / symmetric when both are.
+/// Weighted sum wa * A + wb * B of two measures. Normalized / symmetric when both are. A term of
+/// weight 0 is left out, also where its measure is +inf (0, not 0 * inf).
 /// \cgalModels `DistortionMeasure` (when `A` and `B` are models)
 template <class A, class B>
 struct Weighted_sum : measures_internal::Pair_of_measures<A, B>

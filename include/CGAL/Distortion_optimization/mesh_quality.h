@@ -17,6 +17,7 @@
 #include <CGAL/Distortion_optimization/internal/run_on_adapter.h>
 #include <CGAL/Distortion_optimization/internal/triangle_mesh_adapter.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -82,6 +83,13 @@ Vector<3> as_vector(const Point& p)
     return Vector<3>(CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0.);
 }
 
+// The orientation of a planar mesh's triangles that are not inverted, from its total signed area
+// (a planar mesh may be clockwise as a whole).
+inline CGAL::Orientation planar_orientation(double signed_area)
+{
+  return signed_area >= 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+}
+
 // The cell moved to the origin and scaled by a power of two (exactly) to edges of about unit
 // length: angles and radius ratios do not change, and their products of up to five lengths
 // neither overflow nor underflow whatever the mesh's units.
@@ -94,8 +102,8 @@ std::array<Vector<3>, N> unit_sized(const std::array<Vector<3>, N>& p)
     q[i] = p[i] - p[0];
     largest = std::max(largest, q[i].cwiseAbs().maxCoeff());
   }
-  if(largest > 0 && std::isfinite(largest))
-    for(Vector<3>& x : q) x *= std::ldexp(1., -std::ilogb(largest));
+  const double scale = unit_scale(largest);
+  for(Vector<3>& x : q) x *= scale;
   return q;
 }
 
@@ -135,6 +143,18 @@ inline void cell_shape(const std::array<Vector<3>, 4>& cell, std::array<double, 
   ratio = faces > 0 && circum > 0 ? 108 * volume * volume / (faces * circum) : 0.;
 }
 
+// The cube root of x > 0 taken on x scaled by a power of 8 into [1, 8): libm's cbrt is not
+// correctly rounded, and cbrt(8 x) may differ from 2 cbrt(x) in the last place; this one gives
+// the same digits for x and 8^k x, so that a mesh scaled by a power of two has the same ideal
+// cells, scaled, and the same optimization (with the boundary sliding, the last places of the
+// start decided the result's fifth digit).
+inline double cbrt_by_octaves(double x)
+{
+  if(!(x > 0) || !std::isfinite(x)) return std::cbrt(x);
+  const int e = std::ilogb(x), k = (e >= 0 ? e : e - 2) / 3;   // floor(e / 3)
+  return std::ldexp(std::cbrt(std::ldexp(x, -3 * k)), k);
+}
+
 // The edges of the regular simplex of the given volume (area in 2D) and orientation sign: the
 // "source" of a cell measured against the ideal element.
 template <int n>
@@ -146,7 +166,7 @@ Matrix<n> ideal_cell_edges(double volume, int sign)
     E *= std::sqrt(volume / (std::sqrt(3.) / 4));
   } else {
     E << 1., 0.5, 0.5, 0., std::sqrt(3.) / 2, std::sqrt(3.) / 6, 0., 0., std::sqrt(2. / 3);   // volume sqrt(2) / 12
-    E *= std::cbrt(volume / (std::sqrt(2.) / 12));
+    E *= cbrt_by_octaves(volume / (std::sqrt(2.) / 12));
   }
   if(sign < 0) E.row(n - 1) *= -1;   // the mirror image: the orientation of the cell
   return E;
@@ -188,7 +208,7 @@ Mesh_quality mesh_quality(const Mesh& mesh, const PositionMap& positions)
     internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, 3>& p) {
       signed_area += CGAL::to_double(CGAL::area(p[0], p[1], p[2]));
     });
-  const CGAL::Orientation expected = n == 3 || signed_area >= 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+  const CGAL::Orientation expected = n == 3 ? CGAL::POSITIVE : internal::planar_orientation(signed_area);
   q.min_angle = 180;
   q.min_radius_ratio = 1;
   internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, n + 1>& p) {
@@ -237,6 +257,26 @@ std::vector<double> radius_ratios(const std::vector<std::array<double, 3>>& poin
     ratios.push_back(ratio);
   }
   return ratios;
+}
+
+/// \ingroup PkgDistortionOptimizationRef
+/// Whether each triangle of a planar soup (the points' x and y; z is ignored) is inverted as
+/// `mesh_quality()` counts it: its orientation (exact predicate) differs from the sign of the
+/// soup's total signed area, flat triangles included. E.g. to draw them apart in a picture of
+/// `radius_ratios()` with `IO::write_SVG()`.
+/// \pre every index of `cells` is smaller than `points.size()`.
+inline std::vector<bool> inverted_triangles(const std::vector<std::array<double, 3>>& points,
+                                            const std::vector<std::array<std::size_t, 3>>& cells)
+{
+  using Point = CGAL::Epick::Point_2;
+  const auto point = [&](std::size_t v) { return Point(points[v][0], points[v][1]); };
+  double signed_area = 0;
+  for(const auto& t : cells) signed_area += CGAL::area(point(t[0]), point(t[1]), point(t[2]));
+  const CGAL::Orientation expected = internal::planar_orientation(signed_area);
+  std::vector<bool> inverted;
+  inverted.reserve(cells.size());
+  for(const auto& t : cells) inverted.push_back(CGAL::orientation(point(t[0]), point(t[1]), point(t[2])) != expected);
+  return inverted;
 }
 
 /// \ingroup PkgDistortionOptimizationRef

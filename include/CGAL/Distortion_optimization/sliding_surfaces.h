@@ -10,6 +10,7 @@
 #define CGAL_DISTORTION_OPTIMIZATION_SLIDING_SURFACES_H
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -111,7 +112,7 @@ public:
           throw Invalid_input("triangle " + std::to_string(i) + " of the sliding surface has a non-finite coordinate");
         largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
       }
-    if(largest > 0) scale_ = std::ldexp(1., -std::ilogb(largest));
+    scale_ = internal::unit_scale(largest);
     triangles_->reserve(triangles.size());
     for(const auto& t : triangles) {
       const auto point = [&](const std::array<double, 3>& p) { return K::Point_3(p[0] * scale_, p[1] * scale_, p[2] * scale_); };

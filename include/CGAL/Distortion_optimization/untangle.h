@@ -37,7 +37,10 @@ most three constrained vertices, the untangling starts again from Tutte's embedd
 boundary on a circle, each inner vertex the mean of its neighbours), moved onto the constrained
 vertices by a similarity (at most two) or an affine map keeping orientations (three, where their
 targets allow one): an injective map, for folds no descent opens (an ear of a free boundary turned
-inside out).
+inside out). So it does when exactly the boundary vertices are constrained and their targets, in the
+boundary's order, form a convex polygon (a circle, or a square with vertices along its sides):
+Tutte's embedding with the boundary there is injective, but for triangles with their three
+vertices on one side, which the rounds that follow it then open.
 Use `CGAL::minimize_distortion()` afterwards (or its named parameter `untangle_first`) to optimize
 a measure from the untangled map.
 
@@ -148,8 +151,9 @@ a measure from the untangled map.
 \throws Distortion_optimization::Invalid_input, leaving `target` unchanged, for the input
 `CGAL::compute_distortion()` rejects, non-positive or non-finite vertex weights, a negative number
 of threads, and when inverted cells remain after the rounds when Tutte's embedding does not apply
-(the constraints may admit no injective map: e.g. a fixed boundary that crosses itself); the
-message gives the number of cells still inverted.
+(the constraints may admit no injective map: e.g. a fixed boundary that crosses itself, or the
+descent found none: e.g. one in a boundary fixed on a polygon that is not convex); the message
+gives the number of cells still inverted.
 \throws Distortion_optimization::Unmovable_inverted_cell (an `Invalid_input`) for an inverted
 cell whose vertices are all constrained, before any round.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with

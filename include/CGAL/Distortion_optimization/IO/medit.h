@@ -312,8 +312,8 @@ inline Tetrahedron_soup read_tetrahedron_soup(const std::string& path)
 /// that `read_MEDIT_soup()` reads back as the same doubles.
 /// \throws Invalid_input (before anything is written) if `labels`, `point_labels` or
 /// `triangle_labels` is neither empty nor one per tetrahedron, vertex or triangle, a coordinate is
-/// not finite, a triangle or a tetrahedron has an index out of range, or a tetrahedron repeats a
-/// vertex, i.e. whenever `read_MEDIT_soup()` would reject the file; or if the file cannot be written.
+/// not finite, or a triangle or a tetrahedron has an index out of range or repeats a vertex, i.e.
+/// whenever `read_MEDIT_soup()` would reject the file; or if the file cannot be written.
 inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& soup)
 {
   const auto check_labels = [&](std::size_t labels, std::size_t entries, const char* what) {
@@ -323,23 +323,22 @@ inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& so
   check_labels(soup.labels.size(), soup.cells.size(), "tetrahedra");
   check_labels(soup.point_labels.size(), soup.points.size(), "vertices");
   check_labels(soup.triangle_labels.size(), soup.triangles.size(), "triangles");
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for(std::size_t v : soup.triangles[f])
-      if(v >= soup.points.size())
-        throw Invalid_input(path + ": triangle " + std::to_string(f) + " has vertex index " + std::to_string(v) + " out of range");
+  const auto check_simplices = [&](const auto& simplices, const std::string& entry) {
+    for(std::size_t c = 0; c < simplices.size(); ++c) {
+      const auto& s = simplices[c];
+      for(std::size_t i = 0; i < s.size(); ++i) {
+        if(s[i] >= soup.points.size())
+          throw Invalid_input(path + ": " + entry + " " + std::to_string(c) + " has vertex index " + std::to_string(s[i]) + " out of range");
+        for(std::size_t j = 0; j < i; ++j)
+          if(s[j] == s[i]) throw Invalid_input(path + ": " + entry + " " + std::to_string(c) + " repeats vertex " + std::to_string(s[i]));
+      }
+    }
+  };
+  check_simplices(soup.triangles, "triangle");
   for(std::size_t v = 0; v < soup.points.size(); ++v)
     for(double x : soup.points[v])
       if(!std::isfinite(x)) throw Invalid_input(path + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
-  for(std::size_t c = 0; c < soup.cells.size(); ++c) {
-    const auto& t = soup.cells[c];
-    for(int i = 0; i < 4; ++i) {
-      if(t[i] >= soup.points.size())
-        throw Invalid_input(path + ": tetrahedron " + std::to_string(c) + " has vertex index " + std::to_string(t[i]) +
-                            " out of range");
-      for(int j = 0; j < i; ++j)
-        if(t[j] == t[i]) throw Invalid_input(path + ": tetrahedron " + std::to_string(c) + " repeats vertex " + std::to_string(t[i]));
-    }
-  }
+  check_simplices(soup.cells, "tetrahedron");
   // Formatted into memory with std::to_chars (the shortest decimals that read back the same
   // doubles), then written at once: through the stream's locale, each number took a virtual call.
   std::string text;

@@ -128,6 +128,17 @@ public:
                              std::array<Vec, n + 1>* gradient) { cell_gradients(cells, count, gradient); }, &g, nullptr);
   }
 
+  // Eigen's incomplete Cholesky factor of A scaled by a power of two (exactly) to a largest
+  // diagonal entry in [1, 2): its square roots then see the same digits whatever the mesh's
+  // units, and a preconditioner's scale changes no iterate of conjugate gradients, so that a mesh
+  // scaled by 2 gives the same iterates scaled (unscaled, its results differed from the fifth
+  // digit on with the boundary sliding).
+  static void incomplete_cholesky(const Eigen::SparseMatrix<double>& A, Eigen::IncompleteCholesky<double>& factor)
+  {
+    const Eigen::SparseMatrix<double> scaled = (A.rows() > 0 ? unit_scale(A.diagonal().cwiseAbs().maxCoeff()) : 1.) * A;
+    factor.compute(scaled);
+  }
+
   // A preconditioner for H (hessian()) that does not depend on the map: an incomplete Cholesky
   // factor of the source's Laplacian (P with the unit factors), applied to each of a vertex's n
   // coordinates (on threads). Where H is nearly singular in directions that P is not (MIPS's
@@ -139,7 +150,7 @@ public:
     Coordinatewise_laplacian(Laplacian_system& system) : workers_(system.workers_)
     {
       system.refill(nullptr, nullptr, nullptr);
-      factor_.compute(system.P_);
+      incomplete_cholesky(system.P_, factor_);
     }
     bool ok() const { return factor_.info() == Eigen::Success; }
     Eigen::VectorXd solve(const Eigen::VectorXd& r) const
@@ -283,7 +294,7 @@ public:
       const double tolerance2 = harmonic_tolerance * harmonic_tolerance;
       if(((residual.colwise().squaredNorm().array() <= tolerance2 * rhs.colwise().squaredNorm().array())).all()) return true;
       Eigen::IncompleteCholesky<double> preconditioner;
-      preconditioner.compute(P_);
+      incomplete_cholesky(P_, preconditioner);
       if(preconditioner.info() != Eigen::Success) return false;
       solve(P_, preconditioner, rhs, X, harmonic_iterations, harmonic_tolerance);
     }

@@ -67,9 +67,13 @@ public:
       cell_distortions<n>(measure_, p_.map, size, [&](std::size_t i) { return first + i; }, &value_[first]);
     });
     for(std::size_t c = 0; c < value_.size(); ++c) {
-      if(std::isnan(value_[c]))
-        throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number (its singular values "
-                            "overflow or underflow: is the target's size far from the source's?)");
+      if(std::isnan(value_[c])) {
+        const Matrix<n> J = p_.map.jacobian(c);
+        throw Invalid_input("the distortion of cell " + std::to_string(c) + " is not a number " +
+                            (J.allFinite() && signed_singular_values(J).allFinite()
+                             ? "(the measure '" + measure_.name() + "' gives NaN for its singular values)"
+                             : std::string("(its singular values overflow or underflow: is the target's size far from the source's?)")));
+      }
       if(!std::isfinite(value_[c]) && valid_[c])   // (exact predicates) the value overflows
         throw Invalid_input("the distortion of cell " + std::to_string(c) + " of the start map under '" + measure_.name() +
                             "' exceeds the largest double, though the cell is not inverted: it is nearly flat, or "

@@ -26,15 +26,21 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
+// The power of two that scales `largest` into [1, 2) (exactly, as any power of two); 1 where
+// `largest` is 0 or not finite. For whatever multiplies several lengths at any size: maps,
+// sliding surfaces, the shapes of cells.
+inline double unit_scale(double largest)
+{
+  return largest > 0 && std::isfinite(largest) ? std::ldexp(1., -std::ilogb(largest)) : 1.;
+}
+
 // The power of two by which an adapter scales source and target coordinates alike when the largest
 // is far from 1: the kernels form products of up to 2n coordinates (volumes, squared cofactors),
 // which overflow or underflow past about 1e50 in 3D. A common factor changes no Jacobian and no
 // orientation, and a power of two is exact, so results are those of the unscaled map to the bit.
 inline double coordinate_scale(double largest)
 {
-  if(largest > 0 && std::isfinite(largest) && !(largest > 0x1p-60 && largest < 0x1p60))
-    return std::ldexp(1., -std::ilogb(largest));
-  return 1.;
+  return largest > 0x1p-60 && largest < 0x1p60 ? 1. : unit_scale(largest);
 }
 
 // The largest extent of the bounding box of `points` (0 for none).

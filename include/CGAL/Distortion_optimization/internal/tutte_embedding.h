@@ -5,15 +5,20 @@
 // source's edge lengths, and each inner vertex the mean of its neighbours (Tutte, "How to draw a
 // graph", 1963; Floater, "Parametrization and smooth approximation of surface triangulations",
 // 1997). It is injective with every triangle positively oriented (in exact arithmetic), whatever
-// the start: the untangler's last resort for a map with a free boundary when the boundary guard
-// holds a fold in place. An ear of the boundary turned inside out (a tentacle tip of the ABCD
-// octopus) can only come right by moving far through the outside, which no descent on the
-// barrier finds; with the boundary guard it stays inverted.
+// the start, and so it is with the boundary on any strictly convex polygon: the untangler's last
+// resort. For a map with a free boundary when the boundary guard holds a fold in place: an ear of
+// the boundary turned inside out (a tentacle tip of the ABCD octopus) can only come right by
+// moving far through the outside, which no descent on the barrier finds; with the boundary guard
+// it stays inverted. For a boundary fixed on a convex polygon, where the descent ends with cells
+// still inverted (a vertex of lion-head's Tutte map moved 100 times the disk's radius away: 3
+// inverted cells at the start, 8 after 73 rounds).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
 
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -28,20 +33,44 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// Tutte's embedding of p's mesh into x, scaled to the area p's cells have at det J =
-// `typical_det`, then moved by the similarity (at most two constrained vertices) or the affine map
-// (three) that puts p's constrained vertices back on their targets. Returns false, x unspecified,
-// where it does not apply: the mesh is not a disk (one boundary loop through every boundary vertex,
-// Euler characteristic 1), more than three vertices are constrained, two constrained vertices share
-// a target, three constrained vertices' targets are not as their embedding oriented (no affine map
-// keeping orientations sends them there), or the solve fails.
+// Whether the constrained vertices of p are those of the boundary `loop` (`constrained` of them)
+// and their targets, in the loop's order, never turn right nor back (exact predicate) and turn once
+// around: a convex polygon, counterclockwise as the loop runs for positive cells. Straight
+// continuations are allowed, as along the sides of a square: Tutte's embedding is then injective
+// unless some inner edge joins two vertices of one side (Floater, "One-to-one piecewise linear
+// mappings over triangulations", 2003), which leaves cells flat for the untangling rounds after it.
+inline bool is_convex_loop(const Optimization_problem<2>& p, const std::vector<std::uint32_t>& loop, std::size_t constrained)
+{
+  if(loop.size() != constrained) return false;
+  const auto target = [&](std::size_t i) -> const Vector<2>& { return p.map.target[loop[i % loop.size()]]; };
+  const auto point = [&](std::size_t i) { return CGAL::Epick::Point_2(target(i)[0], target(i)[1]); };
+  double turning = 0;
+  for(std::size_t i = 0; i < loop.size(); ++i) {
+    const Vector<2> a = target(i + 1) - target(i), b = target(i + 2) - target(i + 1);
+    const CGAL::Orientation turn = CGAL::orientation(point(i), point(i + 1), point(i + 2));
+    if(p.is_free[loop[i]] || turn == CGAL::RIGHT_TURN || (turn == CGAL::COLLINEAR && !(a.dot(b) > 0))) return false;
+    turning += std::atan2(a[0] * b[1] - a[1] * b[0], a.dot(b));
+  }
+  return std::abs(turning - 2 * M_PI) < M_PI;   // 2 pi k for k turns around
+}
+
+// Tutte's embedding of p's mesh into x: with at most three constrained vertices, the boundary on a
+// circle, scaled to the area p's cells have at det J = `typical_det`, then moved by the similarity
+// (at most two) or the affine map (three) that puts the constrained vertices back on their
+// targets; with more, the boundary on the constrained targets, which must then be the boundary's
+// vertices on a convex polygon (is_convex_loop(): Tutte's theorem holds for any convex boundary).
+// Returns false, x unspecified, where it does not apply: the mesh is not a disk (one boundary loop
+// through every boundary vertex, Euler characteristic 1), more than three vertices are constrained
+// and they are not a convex boundary, two constrained vertices share a target, three constrained
+// vertices' targets are not as their embedding oriented (no affine map keeping orientations sends
+// them there), or the solve fails.
 inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det, std::vector<Vector<2>>& x)
 {
   const std::size_t nv = p.number_of_vertices(), nc = p.map.number_of_cells();
   std::vector<std::uint32_t> constrained;
   for(std::uint32_t v = 0; v < nv; ++v)
     if(!p.is_free[v]) constrained.push_back(v);
-  if(constrained.size() > 3 || !p.is_sliding.empty() || nc == 0) return false;
+  if(!p.is_sliding.empty() || nc == 0) return false;
 
   // Edges as (smaller vertex, larger vertex, cell, position of the edge's first vertex in it).
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, int>> edges;
@@ -87,7 +116,12 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
   }
   if(loop.size() != boundary_edges || !(perimeter > 0)) return false;   // more than one loop
 
-  // The circle, of the area the cells cover at the typical determinant.
+  // More than three constrained vertices: the boundary's, exactly, on a convex polygon.
+  const bool onto_targets = constrained.size() > 3;
+  if(onto_targets && !is_convex_loop(p, loop, constrained.size())) return false;
+
+  // The boundary on its targets, or on the circle of the area the cells cover at the typical
+  // determinant.
   double area = 0;
   for(double a : p.map.rest_volume) area += a;
   const double radius = std::sqrt(area * typical_det / M_PI);
@@ -96,7 +130,7 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
   double arc = 0;
   for(std::uint32_t v : loop) {
     const double angle = 2 * M_PI * arc / perimeter;
-    x[v] = radius * Vector<2>(std::cos(angle), std::sin(angle));
+    x[v] = onto_targets ? p.map.target[v] : Vector<2>(radius * Vector<2>(std::cos(angle), std::sin(angle)));
     arc += length[v];
     column[v] = -2;
   }

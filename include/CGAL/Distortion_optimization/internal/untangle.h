@@ -342,7 +342,8 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
     problem.map.target = start_targets;
     // (The count may exceed the start's: a round may flip valid cells on its way.)
     const bool constrained = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end();
-    const std::string why = constrained ? "the constraints may admit no injective map"
+    const std::string why = constrained ? "the descent found no injective map within the constraints, which may admit none "
+                                          "(e.g. a fixed boundary that crosses itself)"
                           : 2 * report.inverted_before > problem.map.number_of_cells()
                             ? "no vertex is constrained, and the start inverts most cells: it may be a mirror image (reflect it)"
                             : "no vertex is constrained, yet the descent found no injective map";
@@ -485,8 +486,9 @@ Untangle_report untangle_from_start(Optimization_problem<n>& problem, const Geom
 }
 
 // Untangles problem.map in place (untangle_from_start()), or when that fails on a planar disk
-// with at most three constrained vertices, from its Tutte embedding (tutte_embedding.h): an
-// injective map that is untangled already unless rounding left cells flat. Throws as
+// with at most three constrained vertices or its boundary fixed on a convex polygon, from its Tutte
+// embedding (tutte_embedding.h): an injective map that is untangled already unless rounding left
+// cells flat. Throws as
 // untangle_everywhere() when neither applies or succeeds, the map unchanged.
 template <int n, class GeomTraits>
 Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
