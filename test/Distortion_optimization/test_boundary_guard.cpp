@@ -1,7 +1,9 @@
 // Boundary_guard: boundary extraction, exact accept/reject of boundary moves, soundness after the
 // stored boxes drift, and agreement with a brute-force all-pairs check (exact constructions).
 
+#include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/internal/boundary_guard.h>
+#include <CGAL/Distortion_optimization/internal/minimize.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Intersections_2/Segment_2_Segment_2.h>
@@ -13,6 +15,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <random>
 #include <set>
 #include <vector>
@@ -515,4 +520,67 @@ TEST(BoundaryGuard, AgreesWithBruteForceOnRandomTetBoundaryMoves)
   EXPECT_TRUE(brute_force_injective(faces, m.target));
   EXPECT_GT(accepted, 50);
   EXPECT_GT(rejected, 50);
+}
+
+// A U of 3024 tetrahedra whose arms a rigid-type measure presses together, the faces between them
+// free: the result keeps its clearance, and its coordinates rounded to 15 digits do not make the
+// boundary cross itself (exact predicates). The guard's distance of two triangles once depended on
+// their order (CGAL's Triangle_3-Triangle_3 distance in doubles): the arms ended 0.003 units in
+// the last place apart, and the written map crossed itself.
+TEST(BoundaryGuard, PressedArmsKeepTheirClearanceThroughRounding)
+{
+  const int nx = 18, ny = 12, nz = 3;
+  const auto kept = [](int i, int j) { return i < 6 || i >= 12 || j < 4; };   // the cube at (i, j, .)
+  DOI::Optimization_problem<3> p;
+  std::map<std::array<int, 3>, Index> index;
+  std::vector<unsigned char> fixed;
+  const auto vertex = [&](std::array<int, 3> c) {
+    const auto [it, added] = index.emplace(c, Index(p.map.target.size()));
+    if(added) {
+      p.map.target.emplace_back(0.5 * c[0], 0.5 * c[1], 0.5 * c[2]);
+      fixed.push_back(c[1] == 0 || c[0] == 0 || c[0] == nx);   // the bottom and the arms' outer faces
+    }
+    return it->second;
+  };
+  for(int l = 0; l < nz; ++l)
+    for(int j = 0; j < ny; ++j)
+      for(int i = 0; i < nx; ++i) {
+        if(!kept(i, j)) continue;
+        std::array<int, 3> axes = {0, 1, 2};
+        do {
+          std::array<int, 3> c = {i, j, l};
+          std::array<Index, 4> cell;
+          cell[0] = vertex(c);
+          for(int step = 0; step < 3; ++step) {
+            ++c[axes[step]];
+            cell[step + 1] = vertex(c);
+          }
+          DOI::Matrix<3> Dm;
+          for(int k = 0; k < 3; ++k) Dm.col(k) = p.map.target[cell[k + 1]] - p.map.target[cell[0]];
+          p.map.add_cell(cell, Dm, Dm.determinant() > 0 ? 1 : -1);
+        } while(std::next_permutation(axes.begin(), axes.end()));
+      }
+  ASSERT_EQ(p.map.number_of_cells(), 3024u);
+  for(auto& x : p.map.target) x[0] *= 0.6;   // the start: the arms 1.8 apart
+  p.is_free.resize(fixed.size());
+  for(std::size_t v = 0; v < fixed.size(); ++v) p.is_free[v] = !fixed[v];
+  p.finalize(CGAL::Distortion_optimization::Cell_weighting::AVERAGE_VOLUME);
+  DOI::Options options;
+  options.global_injectivity = true;
+  options.iterations = 200;
+  const auto r = DOI::minimize(p, CGAL::Distortion_optimization::Isometric_dilatation(), CGAL::Epick(), options);
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_LT(r.final_energy, r.initial_energy);
+
+  Guard3 guard(Guard3::boundary_faces(p.map.cells), p.map.target.size());
+  guard.rebuild(p.map.target);
+  EXPECT_TRUE(guard.keeps_clearance());
+  std::vector<Vector<3>> rounded = p.map.target;
+  for(auto& x : rounded)
+    for(int k = 0; k < 3; ++k) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.15g", x[k]);
+      x[k] = std::strtod(text, nullptr);
+    }
+  EXPECT_TRUE(guard.is_injective(rounded));
 }

@@ -27,8 +27,8 @@
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
 #include <CGAL/Distance_2/Segment_2_Segment_2.h>
-#include <CGAL/Distance_3/Point_3_Triangle_3.h>   // before the next: CGAL 5.5 forgets to include it there
-#include <CGAL/Distance_3/Triangle_3_Triangle_3.h>
+#include <CGAL/Distance_3/Point_3_Triangle_3.h>
+#include <CGAL/Distance_3/Segment_3_Segment_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Intersections_2/Segment_2_Segment_2.h>
 #include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
@@ -405,7 +405,27 @@ private:
   {
     if(!(fraction > 0)) return false;
     const double d = fraction * clearance(face_box(fi, t).merged(face_box(gi, t)));
-    return !(CGAL::squared_distance(e, g) > d * d);
+    return !(squared_distance(e, g) > d * d);
+  }
+
+  // The squared distance of two faces that do not meet, the same for (e, g) and (g, e). Triangles:
+  // the least over each vertex to the other triangle and each edge to each edge of the other.
+  // CGAL 5.5's Triangle_3-Triangle_3 distance, computed in doubles, depends on the order: two faces
+  // of a free boundary pressed together were 4.6e-13 apart one way and 0 the other (64 ulps were
+  // 1.5e-13 there), and the moves' checks, one way, let them close in to 0.003 ulp.
+  static double squared_distance(const K::Segment_2& e, const K::Segment_2& g)
+  {
+    return std::min(CGAL::squared_distance(e, g), CGAL::squared_distance(g, e));
+  }
+  static double squared_distance(const K::Triangle_3& e, const K::Triangle_3& g)
+  {
+    double d = infinity;
+    for(int i = 0; i < 3; ++i) {
+      d = std::min({d, CGAL::squared_distance(e.vertex(i), g), CGAL::squared_distance(g.vertex(i), e)});
+      const K::Segment_3 edge(e.vertex(i), e.vertex((i + 1) % 3));
+      for(int j = 0; j < 3; ++j) d = std::min(d, CGAL::squared_distance(edge, K::Segment_3(g.vertex(j), g.vertex((j + 1) % 3))));
+    }
+    return d;
   }
 };
 
