@@ -623,6 +623,23 @@ int run_tetrahedra(const Command_line& c)
   // does across the sharp edges of the domain).
   Command_line run = c;
   if(c.volume_mode()) {
+    // The start is the tool's own, of about unit size (the radial map's, the square of a unit
+    // source's): a source too far from unit size for the measures is refused as such, before
+    // the radial map squares its size out of double precision. Half extents: the whole may
+    // overflow.
+    std::array<double, 3> low = source.points[0], high = low;
+    for(const auto& p : source.points)
+      for(int k = 0; k < 3; ++k) {
+        low[k] = std::min(low[k], p[k]);
+        high[k] = std::max(high[k], p[k]);
+      }
+    double half_extent = 0;
+    for(int k = 0; k < 3; ++k) half_extent = std::max(half_extent, high[k] / 2 - low[k] / 2);
+    const int size = std::ilogb(half_extent) + 1;
+    if(std::abs(size - 1) > DO::largest_size_ratio_exponent<3>)
+      throw DO::Invalid_input("the source's size (about 2^" + std::to_string(size) + ") and the unit size of the start (--start " +
+                              c.start + ") differ by more than 2^" + std::to_string(DO::largest_size_ratio_exponent<3>) +
+                              ": distortions cannot be evaluated in double precision; scale the source");
     const K::Point_3 center = c.center.empty() ? DO::volume_centroid(c3t3) : K::Point_3(c.center[0], c.center[1], c.center[2]);
     // The messages in the tool's words: its options rather than the library's functions.
     try {

@@ -178,6 +178,12 @@ Surface icosahedron(double radius)
   return s;
 }
 
+Surface scaled_surface(Surface s, double factor)
+{
+  for(auto v : s.vertices()) s.point(v) = Point(factor * s.point(v).x(), factor * s.point(v).y(), factor * s.point(v).z());
+  return s;
+}
+
 Surface triangulated_cube()
 {
   Surface s;
@@ -237,6 +243,44 @@ TEST(VolumeWorkflow, DefaultSizesFollowTheScaleOfTheInput)
     EXPECT_NEAR(complex_volume(c3t3), DO::interior_mesh_sizes(s).volume, 0.03 * complex_volume(c3t3));
   }
   EXPECT_NEAR(double(cells[0]), double(cells[1]), 0.05 * cells[1]);
+}
+
+TEST(VolumeWorkflow, ExactScalingsGiveTheScaledComplex)
+{
+  // Mesh_3 runs on a copy scaled to unit size, so a surface scaled by 2^k gives the complex of the
+  // unscaled one scaled by 2^k, bit for bit: points and weights, with the default sizes and with
+  // given ones. Run on Mesh_3 directly, ellipsoid.off crashed at 2^-60 and did not finish at 2^-40.
+  // The cube's sharp edges bring weighted points (the protecting balls).
+  DEMO_SURFACE(ellipsoid, "ellipsoid.off");
+  // The points and weights of the cells in the complex, in its order, divided by `factor`.
+  const auto unscaled_points = [](const C3t3& c3t3, double factor) {
+    std::vector<std::array<double, 4>> points;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i) {
+        const auto& p = c3t3.triangulation().point(c, i);
+        points.push_back({p.x() / factor, p.y() / factor, p.z() / factor, p.weight() / factor / factor});
+      }
+    return points;
+  };
+  for(const bool cube : {false, true}) {
+    const Surface surface = cube ? triangulated_cube() : ellipsoid;
+    const auto mesh = [&](double factor) {
+      const Surface s = scaled_surface(surface, factor);
+      return cube ? DO::mesh_interior(s, DOP::cell_size(0.25 * factor)) : DO::mesh_interior(s);
+    };
+    const C3t3 reference = mesh(1);
+    ASSERT_GT(reference.number_of_cells_in_complex(), 100u);
+    if(cube) { ASSERT_EQ(reference.number_of_corners(), 8u); }
+    const auto expected = unscaled_points(reference, 1);
+    for(const int k : {-300, -60, -40, 1, 200, 300}) {
+      const double factor = std::ldexp(1., k);
+      const C3t3 c3t3 = mesh(factor);
+      EXPECT_TRUE(unscaled_points(c3t3, factor) == expected) << (cube ? "cube" : "ellipsoid") << " at 2^" << k;
+      EXPECT_EQ(non_positive_cells(c3t3), 0u);
+      const DO::Interior_mesh_sizes sizes = DO::interior_mesh_sizes(scaled_surface(surface, factor));
+      EXPECT_EQ(sizes.cell_size, factor * DO::interior_mesh_sizes(surface).cell_size) << k;
+    }
+  }
 }
 
 TEST(VolumeWorkflow, CubeKeepsItsCornersAndEdges)
@@ -426,6 +470,71 @@ void expect_enlarging_ball_map_converges(const Surface& blobby, double cell_size
   EXPECT_LT(r.iterations, iterations);
   EXPECT_LT(r.final_energy, energy);
   EXPECT_GT(on_the_unit_sphere(c3t3, ball), cells / 20);
+}
+
+TEST(VolumeWorkflow, StartMapsAreTheSameAtAnyScale)
+{
+  // volume_centroid() and star_shaped_to_unit_ball() compute in coordinates scaled to unit size:
+  // at 2^-300 and 2^300, where their products of four lengths under- or overflow (the centroid
+  // was refused as outside the volume, rays missed the boundary), they give the scaled centroid
+  // and the same ball map, bit for bit.
+  DEMO_SURFACE(ellipsoid, "ellipsoid.off");
+  Point reference_center;
+  std::vector<Point> reference_ball;
+  std::size_t reference_inverted = 0;
+  for(const int k : {0, -300, 300}) {
+    const double factor = std::ldexp(1., k);
+    const C3t3 c3t3 = DO::mesh_interior(scaled_surface(ellipsoid, factor));
+    const Point center = DO::volume_centroid(c3t3);
+    Targets target;
+    // A few cells of four boundary vertices come out flat (documented): as many at every scale.
+    const std::size_t inverted = DO::star_shaped_to_unit_ball(c3t3, Target_map(target), center);
+    std::vector<Point> ball;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i) ball.push_back(target.at(c->vertex(i)));
+    if(k == 0) {
+      reference_center = center;
+      reference_ball = ball;
+      reference_inverted = inverted;
+      EXPECT_LT(inverted, c3t3.number_of_cells_in_complex() / 100);
+      continue;
+    }
+    EXPECT_EQ(Point(center.x() / factor, center.y() / factor, center.z() / factor), reference_center) << k;
+    EXPECT_TRUE(ball == reference_ball) << k;
+    EXPECT_EQ(inverted, reference_inverted) << k;
+  }
+}
+
+TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)
+{
+  // A tetrahedron spanning -2^1023 .. 2^1023, whose extent is not a double: its centroid and ball
+  // map are those of the unit one, scaled. The radial map, which squares sizes, refuses a domain
+  // 2^600 or 2^-600 in size instead of writing infinities or zeros.
+  const auto tetrahedron = [](double size, C3t3& c3t3) {
+    const std::vector<std::array<double, 3>> points = {{-size, -size, -size}, {size, -size, -size}, {-size, size, -size}, {-size, -size, size}};
+    DO::c3t3_from_tetrahedra(points, std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}}, c3t3);
+  };
+  C3t3 unit, huge;
+  tetrahedron(1, unit);
+  tetrahedron(0x1p1023, huge);
+  const Point c = DO::volume_centroid(unit), h = DO::volume_centroid(huge);
+  EXPECT_EQ(Point(h.x() / 0x1p1023, h.y() / 0x1p1023, h.z() / 0x1p1023), c);
+  Targets unit_ball, huge_ball;
+  EXPECT_EQ(DO::star_shaped_to_unit_ball(unit, Target_map(unit_ball), c), 0u);
+  EXPECT_EQ(DO::star_shaped_to_unit_ball(huge, Target_map(huge_ball), h), 0u);
+  std::vector<Point> a, b;
+  for(const auto& [v, p] : unit_ball) a.push_back(p);
+  for(const auto& [v, p] : huge_ball) b.push_back(p);
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  EXPECT_EQ(a, b);
+  for(const double size : {0x1p600, 0x1p-600}) {
+    C3t3 far;
+    tetrahedron(size, far);
+    Targets radial;
+    expect_invalid([&] { DO::radial_map(far, Target_map(radial), DO::volume_centroid(far)); }, "beyond double precision");
+    EXPECT_TRUE(radial.empty());
+  }
 }
 
 TEST(VolumeWorkflow, EnlargingBallMapConvergesUnderSymmetricDirichlet)

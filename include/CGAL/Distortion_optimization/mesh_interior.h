@@ -14,11 +14,15 @@
 //   4. Delaunay refinement (make_mesh_3) with a seeded random generator, then the optional
 //      optimizers (ODT, Lloyd, perturbation, exudation) without time limits: the output depends
 //      only on the input and the parameters.
+// Mesh_3 runs on a copy scaled by a power of two to unit size, and its complex is scaled back:
+// Mesh_3 has absolute tolerances (it crashed on a surface 2^-60 in size and hung at 2^-40), and
+// an exact scaling makes the mesh of a scaled surface the scaled mesh.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MESH_INTERIOR_H
 #define CGAL_DISTORTION_OPTIMIZATION_MESH_INTERIOR_H
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/number_types.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 
 #include <CGAL/Bbox_3.h>
@@ -178,7 +182,8 @@ struct Interior_mesh_defaults
   static constexpr double sharp_edge_angle = 60;
 };
 
-// A checked copy of the input surface for the domain, oriented to bound its volume. The copy is
+// A checked copy of the input surface for the domain, oriented to bound its volume and scaled by
+// `scale`, the power of two that brings its largest extent into [1, 2). The copy is
 // rebuilt from a canonical soup (points and triangles in the input's order, each triangle starting
 // at its smallest vertex), so that it, and the mesh, depend only on the geometry and that order:
 // not on the input's orientation or on which halfedge each face stores.
@@ -189,9 +194,10 @@ struct Checked_surface
   using Point_3 = typename GeomTraits::Point_3;
   using Triangle = std::array<std::size_t, 3>;
 
-  Surface surface;
-  double volume = 0;
-  double area = 0;
+  Surface surface;   // scaled by `scale`
+  double scale = 1;
+  double volume = 0; // of the input, unscaled
+  double area = 0;   // of the input, unscaled
 
   template <class NamedParameters>
   Checked_surface(const TriangleMesh& tm, const NamedParameters& np)
@@ -259,25 +265,32 @@ struct Checked_surface
       for(auto h : halfedges_around_face(halfedge(f, tm), tm)) t[k++] = compact[get(vertex_index, target(h, tm))];
       triangles.push_back(t);
     }
+    // Half extents: a surface from -2^1023 to 2^1023 has an extent of 2^1024, beyond doubles.
+    const Bbox_3 box = bbox_3(points.begin(), points.end());
+    double half_extent = 0;
+    for(int k = 0; k < 3; ++k) half_extent = (std::max)(half_extent, box.max_coord(k) / 2 - box.min_coord(k) / 2);
+    scale = unit_scale(half_extent) / 2;
+    std::vector<Point_3> scaled;
+    for(const Point_3& p : points)
+      scaled.emplace_back(scale * CGAL::to_double(p.x()), scale * CGAL::to_double(p.y()), scale * CGAL::to_double(p.z()));
     // Mesh_3 tells inside from outside by ray parity, so orientation does not change the volume
     // it meshes; orienting makes the volume below positive and the copy independent of the input's
     // orientation (orient a first build, then read its triangles back).
-    Surface first = build(points, triangles);
+    Surface first = build(scaled, triangles);
     PMP::orient_to_bound_a_volume(first);
     for(auto f : faces(first)) {
       Triangle& t = triangles[std::size_t(f)];
       std::size_t k = 0;
       for(auto v : vertices_around_face(halfedge(f, first), first)) t[k++] = std::size_t(v);
     }
-    surface = build(points, triangles);
+    surface = build(scaled, triangles);
     // The volume, as tetrahedra from the centre of the bounding box in units of its largest extent:
     // PMP::volume() sums them from the origin, where far from it rounding swamps the volume (a unit
     // sphere centred at (10^9, 10^9, 10^9) measured no volume at all).
-    const Bbox_3 box = bbox_3(points.begin(), points.end());
-    const double extent = (std::max)({box.x_span(), box.y_span(), box.z_span()});
     const auto unit = [&](std::size_t i) {
       std::array<double, 3> u;
-      for(int k = 0; k < 3; ++k) u[k] = (CGAL::to_double(points[i][k]) - (box.min_coord(k) + box.max_coord(k)) / 2) / extent;
+      for(int k = 0; k < 3; ++k)
+        u[k] = (CGAL::to_double(points[i][k]) / 2 - (box.min_coord(k) / 2 + box.max_coord(k) / 2) / 2) / half_extent;
       return u;
     };
     double unit_volume = 0;
@@ -287,12 +300,12 @@ struct Checked_surface
     }
     if(!(unit_volume > 0) || !std::isfinite(unit_volume))
       throw Invalid_input("mesh_interior: the surface encloses no volume");
-    volume = unit_volume * extent * extent * extent;
-    area = CGAL::to_double(PMP::area(surface));
+    volume = unit_volume * (2 * half_extent) * (2 * half_extent) * (2 * half_extent);
+    area = CGAL::to_double(PMP::area(surface)) / scale / scale;
     if(!(volume > 0) || !std::isfinite(volume) || !(area > 0) || !std::isfinite(area))
     {
       char size[32];
-      std::snprintf(size, sizeof size, "%g", extent);
+      std::snprintf(size, sizeof size, "%g", 2 * half_extent);
       throw Invalid_input(std::string("mesh_interior: the surface's size (") + size +
                           ") is too large or too small for its volume in double precision: scale it");
     }
@@ -319,8 +332,11 @@ inline void check_size(double value, const char* name)
 }
 
 // The user's sizes where given, else the defaults (each one following the one it derives from).
+// The defaults are computed on the surface scaled by `scale` (a power of two), then scaled back:
+// libm's cube root is not correctly rounded, and would make the default sizes of a surface scaled
+// by 2 differ from twice its sizes in the last place.
 template <class NamedParameters>
-Interior_mesh_sizes read_interior_mesh_sizes(double volume, double area, const NamedParameters& np)
+Interior_mesh_sizes read_interior_mesh_sizes(double volume, double area, double scale, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -330,8 +346,8 @@ Interior_mesh_sizes read_interior_mesh_sizes(double volume, double area, const N
   s.area = area;
   // Tetrahedra for the volume, boundary facets for the area: the larger size wins, so that thin
   // shapes (a lot of area for little volume) do not get far more tetrahedra than the target.
-  const double by_volume = std::cbrt(volume / (D::cells * D::volume_per_cell));
-  const double by_area = std::sqrt(area / (D::boundary_facets * D::area_per_facet));
+  const double by_volume = std::cbrt(volume * scale * scale * scale / (D::cells * D::volume_per_cell)) / scale;
+  const double by_area = std::sqrt(area * scale * scale / (D::boundary_facets * D::area_per_facet)) / scale;
   s.cell_size = choose_parameter(get_parameter(np, internal_np::cell_size), (std::max)(by_volume, by_area));
   check_size(s.cell_size, "the cell size");
   s.facet_size = choose_parameter(get_parameter(np, internal_np::facet_size), s.cell_size);
@@ -352,6 +368,32 @@ Interior_mesh_sizes read_interior_mesh_sizes(double volume, double area, const N
     throw Invalid_input("mesh_interior: the sharp edge angle must be in (0, 180] degrees, not " +
                         std::to_string(s.sharp_edge_angle));
   return s;
+}
+
+// Scales the complex that Mesh_3 made by the power of two `factor`, exactly: the points and their
+// weights (squared lengths), the facets' surface centres and the sizes Mesh_3's optimizers keep in
+// the vertices; the cells' cached circumcentres are dropped, to be computed again when asked for.
+template <class C3T3>
+void scale_complex(C3T3& c3t3, double factor)
+{
+  using Tr = typename C3T3::Triangulation;
+  using Bare_point = typename Tr::Bare_point;
+  using Weighted_point = typename Tr::Weighted_point;
+  if(factor == 1) return;
+  Tr& tr = c3t3.triangulation();
+  const auto scaled = [factor](const Bare_point& p) {
+    return Bare_point(factor * CGAL::to_double(p.x()), factor * CGAL::to_double(p.y()), factor * CGAL::to_double(p.z()));
+  };
+  const auto point = tr.geom_traits().construct_point_3_object();
+  for(auto v : tr.finite_vertex_handles()) {
+    const Weighted_point& p = v->point();
+    v->set_point(Weighted_point(scaled(point(p)), factor * factor * CGAL::to_double(p.weight())));
+    v->set_meshing_info(factor * v->meshing_info());
+  }
+  for(auto c : tr.all_cell_handles()) {
+    c->invalidate_weighted_circumcenter_cache();
+    for(int i = 0; i < 4; ++i) c->set_facet_surface_center(i, scaled(c->get_facet_surface_center(i)));
+  }
 }
 
 template <class NamedParameters>
@@ -475,7 +517,7 @@ Interior_mesh_sizes interior_mesh_sizes(const TriangleMesh& surface,
 {
   using GT = internal::Interior_mesh_traits_of<NamedParameters>;
   const internal::Checked_surface<GT, TriangleMesh> checked(surface, np);
-  return internal::read_interior_mesh_sizes(checked.volume, checked.area, np);
+  return internal::read_interior_mesh_sizes(checked.volume, checked.area, checked.scale, np);
 }
 
 /*!
@@ -500,8 +542,10 @@ self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.
 tetrahedra (median 2.7.10^4) in 0.1 to 6 s (median 0.4 s) on one core; the largest counts come
 from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
 with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
-(mpi_triang.off) stops at `maximum_number_of_vertices`. Sizes are in the units of the input, so
-a scaled input gives the scaled mesh. A size that is given also sets the defaults of the sizes
+(mpi_triang.off) stops at `maximum_number_of_vertices`. Sizes are in the units of the input, and
+Mesh_3 runs on a copy scaled by a power of two to unit size: a surface of any size whose volume a
+`double` holds is meshed alike, and a surface scaled by a power of two gives exactly the scaled complex
+(points and weights). A size that is given also sets the defaults of the sizes
 derived from it: `cell_size(h)` alone makes facet_size = edge_size = h and facet_distance =
 h / 10.
 
@@ -669,7 +713,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   namespace mp = CGAL::parameters;   // Mesh_3's Boost.Parameter keywords live there
 
   internal::Checked_surface<GT, TriangleMesh> checked(surface, np);
-  const Interior_mesh_sizes sizes = internal::read_interior_mesh_sizes(checked.volume, checked.area, np);
+  const Interior_mesh_sizes sizes = internal::read_interior_mesh_sizes(checked.volume, checked.area, checked.scale, np);
   const int odt = choose_parameter(get_parameter(np, internal_np::odt_iterations), 0);
   const int lloyd = choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0);
   const bool perturb = choose_parameter(get_parameter(np, internal_np::perturb_slivers), false);
@@ -711,11 +755,12 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                         (maximum_given ? "" : ", or a larger maximum_number_of_vertices"));
   }
 
-  const typename Types::Criteria criteria(mp::edge_size = sizes.edge_size, mp::facet_angle = sizes.facet_angle,
-                                          mp::facet_size = sizes.facet_size,
-                                          mp::facet_distance = sizes.facet_distance,
+  const double s = checked.scale;   // the sizes in the units of the scaled copy
+  const typename Types::Criteria criteria(mp::edge_size = s * sizes.edge_size, mp::facet_angle = sizes.facet_angle,
+                                          mp::facet_size = s * sizes.facet_size,
+                                          mp::facet_distance = s * sizes.facet_distance,
                                           mp::cell_radius_edge_ratio = sizes.cell_radius_edge_ratio,
-                                          mp::cell_size = sizes.cell_size);
+                                          mp::cell_size = s * sizes.cell_size);
   // time_limit = 0 means none: a time limit would make the output depend on the machine's speed
   // (Mesh_3's default limit for perturbation and exudation is the refinement time).
   const auto odt_options = odt > 0 ? mp::odt(mp::time_limit = 0, mp::max_iteration_number = odt) : mp::no_odt();
@@ -734,6 +779,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   if(c3t3.number_of_cells_in_complex() == 0)
     throw Invalid_input("mesh_interior: Mesh_3 produced no tetrahedron inside the surface (sizes too large "
                         "for the volume?)");
+  internal::scale_complex(c3t3, 1 / s);
   return c3t3;
 }
 

@@ -16,6 +16,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
 #define CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -119,6 +120,29 @@ T cbrt(const T& x)
 }
 
 } // namespace lanes
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The largest `k` for which a map in dimension `n` whose target is `2^k` times larger or smaller
+/// than its source can be optimized in double precision: the measures' second derivatives reach
+/// products of 3n singular values of the Jacobian (the volume measure's 1 / det^3), each about that
+/// ratio, which must stay within \f$ 2^{\pm 900} \f$ (a margin for the sums that hold them; the
+/// volume measure in 3D lost progress at 2^111). 150 for triangles, 100 for tetrahedra; the
+/// functions that evaluate a map throw `Invalid_input` beyond.
+template <int n>
+constexpr int largest_size_ratio_exponent = 900 / (3 * n);
+
+namespace internal {
+
+// The power of two that scales `largest` into [1, 2) (exactly, as any power of two); 1 where
+// `largest` is 0 or not finite. For whatever multiplies several lengths at any size: maps,
+// sliding surfaces, the shapes of cells, the meshing of a surface. At most 2^1023, the largest
+// power of two a double holds: a subnormal `largest` (below 2^-1022) is scaled to below 1.
+inline double unit_scale(double largest)
+{
+  return largest > 0 && std::isfinite(largest) ? std::ldexp(1., (std::min)(-std::ilogb(largest), 1023)) : 1.;
+}
+
+} // namespace internal
 } // namespace Distortion_optimization
 } // namespace CGAL
 

@@ -50,7 +50,8 @@ public:
   /// \throws Invalid_input unless the radius is positive and everything is finite.
   Sphere_surface(const std::array<double, 3>& center, double radius) : center_(center), radius_(radius)
   {
-    if(!(radius > 0) || !std::isfinite(radius) || !std::isfinite(center[0] + center[1] + center[2]))
+    if(!(radius > 0) || !std::isfinite(radius) || !std::isfinite(center[0]) || !std::isfinite(center[1]) ||
+       !std::isfinite(center[2]))
       throw Invalid_input("a sliding sphere needs a finite centre and a finite positive radius");
   }
 
@@ -108,7 +109,7 @@ public:
     double largest = 0;
     for(std::size_t i = 0; i < triangles.size(); ++i)
       for(const auto& p : triangles[i]) {
-        if(!std::isfinite(p[0] + p[1] + p[2]))
+        if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
           throw Invalid_input("triangle " + std::to_string(i) + " of the sliding surface has a non-finite coordinate");
         largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
       }

@@ -15,6 +15,7 @@
 #include <CGAL/Distortion_optimization/internal/named_parameters.h>
 
 #include <CGAL/AABB_traits.h>
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Kernel/global_functions_3.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -23,6 +24,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <unordered_map>
@@ -51,6 +53,30 @@ namespace internal {
 // so that `CGAL::ORIGIN` converts to it.
 template <class C3T3>
 using C3t3_point = typename C3T3::Triangulation::Geom_traits::Point_3;
+
+// The power of two that brings the largest extent of the cells' vertices into [1, 2). The start
+// maps construct in coordinates scaled by it: their products of three or four lengths (volumes,
+// normals dotted with directions) overflow beyond about 2^250 and underflow below 2^-250 otherwise,
+// and an exact scaling changes no result in between.
+template <class C3T3>
+double complex_scale(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  Bbox_3 box;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i) box += point(tr.point(c, i)).bbox();
+  double half_extent = 0;   // an extent may overflow (from -2^1023 to 2^1023)
+  for(int k = 0; k < 3; ++k) half_extent = (std::max)(half_extent, box.max_coord(k) / 2 - box.min_coord(k) / 2);
+  return unit_scale(half_extent) / 2;
+}
+
+// `p` times `s`, a power of two.
+template <class Point_3>
+Point_3 scaled(const Point_3& p, double s)
+{
+  return Point_3(s * CGAL::to_double(p.x()), s * CGAL::to_double(p.y()), s * CGAL::to_double(p.z()));
+}
 
 // Whether p is in a cell of the complex and on no facet of its boundary (exact predicates).
 template <class C3T3, class Point_3>
@@ -85,9 +111,11 @@ internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
   using Point_3 = internal::C3t3_point<C3T3>;
   const auto& tr = c3t3.triangulation();
   auto point = tr.geom_traits().construct_point_3_object();
+  const double s = internal::complex_scale(c3t3);
   double volume = 0, x = 0, y = 0, z = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-    const Point_3 p[4] = {point(tr.point(c, 0)), point(tr.point(c, 1)), point(tr.point(c, 2)), point(tr.point(c, 3))};
+    Point_3 p[4];
+    for(int i = 0; i < 4; ++i) p[i] = internal::scaled(Point_3(point(tr.point(c, i))), s);
     const double w = std::abs(CGAL::to_double(CGAL::volume(p[0], p[1], p[2], p[3])));
     const Point_3 g = CGAL::centroid(p[0], p[1], p[2], p[3]);
     volume += w;
@@ -96,7 +124,7 @@ internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
     z += w * CGAL::to_double(g.z());
   }
   if(!(volume > 0)) throw Invalid_input("the complex has no cell of positive volume: it has no centroid");
-  return Point_3(x / volume, y / volume, z / volume);
+  return Point_3(x / volume / s, y / volume / s, z / volume / s);
 }
 
 /// \ingroup PkgDistortionOptimizationRef
@@ -106,13 +134,26 @@ internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
 /// that grows without bound towards the centre: a hard start for the optimizer.
 /// \throws Center_outside_domain (an `Invalid_input`) if `center` is not strictly inside the
 /// domain (exact predicates), as for `star_shaped_to_unit_ball()`: about a point outside, the map
-/// is no longer the one that shrinks the domain onto its centre. `target` is then unchanged.
+/// is no longer the one that shrinks the domain onto its centre; `Invalid_input` if the image,
+/// whose size is the square of the domain's, is beyond double precision (a domain larger than
+/// \f$ 2^{500} \f$ or smaller than \f$ 2^{-500} \f$ about `center`). `target` is then unchanged.
 template <class C3T3, class TargetMap>
 void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
 {
   using Point_3 = internal::C3t3_point<C3T3>;
   if(!internal::is_strictly_inside(c3t3, center))
     throw Center_outside_domain("the centre of the radial map is not strictly inside the domain");
+  const auto& tr = c3t3.triangulation();
+  auto point = tr.geom_traits().construct_point_3_object();
+  double farthest = 0;   // the largest coordinate of p - center
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i) {
+      const Point_3 p = point(tr.point(c, i));
+      for(int k = 0; k < 3; ++k) farthest = (std::max)(farthest, std::abs(CGAL::to_double(p[k]) - CGAL::to_double(center[k])));
+    }
+  if(!(farthest < 0x1p500 && farthest > 0x1p-500))
+    throw Invalid_input("radial_map: the domain's size about the centre (about 2^" + std::to_string(std::ilogb(farthest)) +
+                        ") squared, the size of its image, is beyond double precision: scale the domain");
   map_vertices(c3t3, target, [&](const Point_3& p) {
     const auto u = p - center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
@@ -151,6 +192,9 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
   auto point = tr.geom_traits().construct_point_3_object();
   if(!internal::is_strictly_inside(c3t3, center))
     throw Center_outside_domain("the centre of the ball map is not strictly inside the domain");
+  // The rays are cast in coordinates scaled by s (see complex_scale()); the image does not change.
+  const double s = internal::complex_scale(c3t3);
+  const Point_3 scaled_center = internal::scaled(center, s);
   std::vector<Triangle> boundary;
   std::size_t index = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++index)
@@ -162,13 +206,13 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
           throw Domain_not_star_shaped("the domain is not star-shaped about the centre: the boundary facet of cell " +
                               std::to_string(index) + " of the complex faces it; choose another centre, or start "
                               "from another map (e.g. radial_map()) and untangle it (untangle())");
-        boundary.emplace_back(a, b, d);
+        boundary.emplace_back(internal::scaled(a, s), internal::scaled(b, s), internal::scaled(d, s));
       }
   if(boundary.empty()) throw Invalid_input("the complex has no boundary facet");
   Tree tree(boundary.begin(), boundary.end());
   std::unordered_map<Vertex_handle, Point_3> image;
   map_vertices(c3t3, boost::associative_property_map<std::unordered_map<Vertex_handle, Point_3>>(image), [&](const Point_3& p) {
-    const auto u = p - center;
+    const auto u = internal::scaled(p, s) - scaled_center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
     if(r == 0) return Point_3(0, 0, 0);
     // Where the ray leaves the domain: a star-shaped domain has one exit point (a ray through an
@@ -177,13 +221,13 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
     // instead missed them all, in double arithmetic, where the ray passes through a vertex of the
     // boundary, as it does for every boundary vertex (a Mesh_3 cube at cell size 0.1).
     std::vector<typename Tree::Primitive_id> facets;
-    tree.all_intersected_primitives(typename K::Ray_3(center, u), std::back_inserter(facets));
+    tree.all_intersected_primitives(typename K::Ray_3(scaled_center, u), std::back_inserter(facets));
     double R = 0;
     for(const auto& facet : facets) {
       const Triangle& t = *facet;
       const auto normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
       const double along = CGAL::to_double(normal * u);   // 0: the ray is in the facet's plane
-      if(along != 0) R = std::max(R, r * CGAL::to_double(normal * (t[0] - center)) / along);
+      if(along != 0) R = std::max(R, r * CGAL::to_double(normal * (t[0] - scaled_center)) / along);
     }
     if(!(R > 0)) throw Invalid_input("a ray from the centre misses the boundary: is the centre inside the domain?");
     const double s = 1. / R;

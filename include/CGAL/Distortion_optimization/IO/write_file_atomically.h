@@ -175,13 +175,13 @@ private:
 };
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Installs handlers of SIGINT, SIGTERM and SIGHUP that remove the temporary files being written
+/// Installs handlers of SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove the temporary files being written
 /// (`Temporary_file`, `write_file_atomically()`) and then end the program as the signal would
 /// have. For programs; a library does not install signal handlers.
 inline void remove_temporary_files_on_signals()
 {
   internal::Temporary_registry::get();   // constructed before any handler may run
-  for(int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, internal::unlink_temporaries_and_reraise);
+  for(int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) std::signal(signal, internal::unlink_temporaries_and_reraise);
 }
 
 namespace internal {

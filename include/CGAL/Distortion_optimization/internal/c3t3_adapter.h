@@ -134,7 +134,7 @@ public:
     map.reserve(c3t3.number_of_cells_in_complex(), tr.number_of_vertices());
     vertex_of.reserve(tr.number_of_vertices());
     on_boundary.reserve(tr.number_of_vertices());
-    double largest = 0;
+    double source_largest = 0, target_largest = 0;
     Vector<3> low = Vector<3>::Constant(std::numeric_limits<double>::infinity()), high = -low;  // the source's box
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       typename Simplicial_map<3>::Cell cell;
@@ -145,7 +145,7 @@ public:
         const auto& q = point(tr.point(c, i));
         x[i] = Vector<3>(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
         p[i] = P(x[i][0], x[i][1], x[i][2]);
-        largest = std::max(largest, x[i].cwiseAbs().maxCoeff());
+        source_largest = std::max(source_largest, x[i].cwiseAbs().maxCoeff());
         low = low.cwiseMin(x[i]);
         high = high.cwiseMax(x[i]);
       }
@@ -163,9 +163,9 @@ public:
     }
     if(cell_of.empty())
       throw Invalid_input("the complex has no cell");
-    for(const Vector<3>& y : map.target) largest = std::max(largest, y.cwiseAbs().maxCoeff());
-    scale = coordinate_scale(largest);
-    check_comparable_sizes((high - low).maxCoeff(), largest_extent(map.target));
+    for(const Vector<3>& y : map.target) target_largest = std::max(target_largest, y.cwiseAbs().maxCoeff());
+    scale = coordinate_scale(source_largest, target_largest);
+    check_comparable_sizes<3>((high - low).maxCoeff(), largest_extent(map.target));
     for(Vector<3>& y : map.target) y *= scale;
     for(const auto& [cell, Dm] : cells) map.add_cell(cell, scale * Dm, +1);
   }

@@ -68,6 +68,15 @@ struct Optimization_problem
     build_rings();
   }
 
+  // Multiplies every cell weight by `factor`, a power of two: exactly, so that no step of the
+  // optimizer changes, only the size of its energies and derivatives.
+  void scale_weights(double factor)
+  {
+    for(double& w : incidence_weight) w *= factor;
+    for(double& w : cell_weight) w *= factor;
+    total_weight *= factor;
+  }
+
   // The rings, from the map's cells.
   void build_rings()
   {

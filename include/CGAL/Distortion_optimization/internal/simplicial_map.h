@@ -10,6 +10,7 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
+#include <CGAL/Distortion_optimization/number_types.h>
 
 #include <Eigen/LU>
 
@@ -26,14 +27,6 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// The power of two that scales `largest` into [1, 2) (exactly, as any power of two); 1 where
-// `largest` is 0 or not finite. For whatever multiplies several lengths at any size: maps,
-// sliding surfaces, the shapes of cells.
-inline double unit_scale(double largest)
-{
-  return largest > 0 && std::isfinite(largest) ? std::ldexp(1., -std::ilogb(largest)) : 1.;
-}
-
 // The power of two by which an adapter scales source and target coordinates alike when the largest
 // is far from 1: the kernels form products of up to 2n coordinates (volumes, squared cofactors),
 // which overflow or underflow past about 1e50 in 3D. A common factor changes no Jacobian and no
@@ -41,6 +34,20 @@ inline double unit_scale(double largest)
 inline double coordinate_scale(double largest)
 {
   return largest > 0x1p-60 && largest < 0x1p60 ? 1. : unit_scale(largest);
+}
+
+// The same for a map, from the largest source and target coordinates: when either is far from 1,
+// the power of two that brings their geometric mean to 1. A source 2^-200 times the size of its
+// target then lies at 2^-100 and the target at 2^100: unscaled, the source's rest volumes (2^-600
+// in 3D) had squares that underflow, in the norms of gradients, and a scale-invariant measure
+// optimized to another energy than on the unscaled map.
+inline double coordinate_scale(double source_largest, double target_largest)
+{
+  const auto near_one = [](double x) { return x > 0x1p-60 && x < 0x1p60; };
+  if(near_one(source_largest) && near_one(target_largest)) return 1.;
+  if(!(source_largest > 0)) source_largest = target_largest;
+  if(!(target_largest > 0)) target_largest = source_largest;
+  return unit_scale(std::sqrt(source_largest) * std::sqrt(target_largest));
 }
 
 // The largest extent of the bounding box of `points` (0 for none).
@@ -56,16 +63,18 @@ double largest_extent(const std::vector<Point>& points)
   return (high - low).maxCoeff();
 }
 
-// Throws unless the source and the target are of sizes within 2^256 of each other: the kernels
-// form products of up to 2n singular values, which overflow or underflow beyond (whatever the
-// common scale of coordinate_scale()).
-inline void check_comparable_sizes(double source_size, double target_size)
+// Throws unless the source and the target are of sizes within 2^largest_size_ratio_exponent<n>:
+// the kernels form products of up to 3n singular values of the Jacobian, about the size ratio
+// each, whatever the common scale of coordinate_scale().
+template <int n>
+void check_comparable_sizes(double source_size, double target_size)
 {
+  constexpr int limit = largest_size_ratio_exponent<n>;
   if(source_size > 0 && target_size > 0 && std::isfinite(source_size) && std::isfinite(target_size) &&
-     std::abs(std::ilogb(source_size) - std::ilogb(target_size)) > 256)
+     std::abs(std::ilogb(source_size) - std::ilogb(target_size)) > limit)
     throw Invalid_input("the target's size (about 2^" + std::to_string(std::ilogb(target_size)) + ") and the source's (2^" +
-                        std::to_string(std::ilogb(source_size)) + ") differ by more than 2^256: distortions cannot be "
-                        "evaluated in double precision; scale one of them");
+                        std::to_string(std::ilogb(source_size)) + ") differ by more than 2^" + std::to_string(limit) +
+                        ": distortions cannot be evaluated in double precision; scale one of them");
 }
 
 template <int n>

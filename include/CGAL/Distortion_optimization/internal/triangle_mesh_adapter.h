@@ -89,11 +89,13 @@ public:
       vertex_of.push_back(v);
       on_boundary.push_back(CGAL::is_border(v, tm) ? 1 : 0);
     }
-    double largest = 0;
-    for(std::size_t i = 0; i < source.size(); ++i)
-      largest = std::max({largest, source[i].cwiseAbs().maxCoeff(), target_of_vertex[i].cwiseAbs().maxCoeff()});
-    scale = coordinate_scale(largest);
-    check_comparable_sizes(largest_extent(source), largest_extent(target_of_vertex));
+    double source_largest = 0, target_largest = 0;
+    for(std::size_t i = 0; i < source.size(); ++i) {
+      source_largest = std::max(source_largest, source[i].cwiseAbs().maxCoeff());
+      target_largest = std::max(target_largest, target_of_vertex[i].cwiseAbs().maxCoeff());
+    }
+    scale = coordinate_scale(source_largest, target_largest);
+    check_comparable_sizes<2>(largest_extent(source), largest_extent(target_of_vertex));
     if(scale != 1)
       for(std::size_t i = 0; i < source.size(); ++i) {
         source[i] *= scale;
