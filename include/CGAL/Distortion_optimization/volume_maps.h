@@ -192,9 +192,9 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
   auto point = tr.geom_traits().construct_point_3_object();
   if(!internal::is_strictly_inside(c3t3, center))
     throw Center_outside_domain("the centre of the ball map is not strictly inside the domain");
-  // The rays are cast in coordinates scaled by s (see complex_scale()); the image does not change.
-  const double s = internal::complex_scale(c3t3);
-  const Point_3 scaled_center = internal::scaled(center, s);
+  // The rays are cast in coordinates scaled by `scale` (see complex_scale()); the image does not change.
+  const double scale = internal::complex_scale(c3t3);
+  const Point_3 scaled_center = internal::scaled(center, scale);
   std::vector<Triangle> boundary;
   std::size_t index = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++index)
@@ -206,13 +206,13 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
           throw Domain_not_star_shaped("the domain is not star-shaped about the centre: the boundary facet of cell " +
                               std::to_string(index) + " of the complex faces it; choose another centre, or start "
                               "from another map (e.g. radial_map()) and untangle it (untangle())");
-        boundary.emplace_back(internal::scaled(a, s), internal::scaled(b, s), internal::scaled(d, s));
+        boundary.emplace_back(internal::scaled(a, scale), internal::scaled(b, scale), internal::scaled(d, scale));
       }
   if(boundary.empty()) throw Invalid_input("the complex has no boundary facet");
   Tree tree(boundary.begin(), boundary.end());
   std::unordered_map<Vertex_handle, Point_3> image;
   map_vertices(c3t3, boost::associative_property_map<std::unordered_map<Vertex_handle, Point_3>>(image), [&](const Point_3& p) {
-    const auto u = internal::scaled(p, s) - scaled_center;
+    const auto u = internal::scaled(p, scale) - scaled_center;
     const double r = std::sqrt(CGAL::to_double(u.squared_length()));
     if(r == 0) return Point_3(0, 0, 0);
     // Where the ray leaves the domain: a star-shaped domain has one exit point (a ray through an
