@@ -414,7 +414,7 @@ struct Untangling_barrier : measures_internal::Unbounded_measure
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const
   {
     constexpr double k = 2. / n;
-    const double theta = n == 2 ? theta_2 : theta_3, r = 1. / reference_det, rk = n == 2 ? r : std::cbrt(r * r);
+    const double theta = n == 2 ? theta_2 : theta_3, r = 1. / reference_det, rk = n == 2 ? r : internal::cbrt_by_octaves(r * r);
     const T D = r * I.det, N = rk * I.norm2, e2 = lanes::broadcast<T>(epsilon * epsilon);
     const T root = lanes::sqrt(e2 + D * D);
     const T chi = regularized_determinant(D, e2, root);
@@ -438,7 +438,7 @@ struct Untangling_barrier : measures_internal::Unbounded_measure
   {
     const double r = 1. / reference_det, D = r * s.prod(), e2 = epsilon * epsilon, root = std::sqrt(e2 + D * D);
     const double chi = regularized_determinant(D, e2, root);
-    return (1 - (n == 2 ? theta_2 : theta_3)) * (n == 2 ? r / chi : std::cbrt(r * r / (chi * chi)));
+    return (1 - (n == 2 ? theta_2 : theta_3)) * (n == 2 ? r / chi : internal::cbrt_by_octaves(r * r / (chi * chi)));
   }
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const

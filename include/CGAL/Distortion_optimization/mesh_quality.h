@@ -143,18 +143,6 @@ inline void cell_shape(const std::array<Vector<3>, 4>& cell, std::array<double, 
   ratio = faces > 0 && circum > 0 ? 108 * volume * volume / (faces * circum) : 0.;
 }
 
-// The cube root of x > 0 taken on x scaled by a power of 8 into [1, 8): libm's cbrt is not
-// correctly rounded, and cbrt(8 x) may differ from 2 cbrt(x) in the last place; this one gives
-// the same digits for x and 8^k x, so that a mesh scaled by a power of two has the same ideal
-// cells, scaled, and the same optimization (with the boundary sliding, the last places of the
-// start decided the result's fifth digit).
-inline double cbrt_by_octaves(double x)
-{
-  if(!(x > 0) || !std::isfinite(x)) return std::cbrt(x);
-  const int e = std::ilogb(x), k = (e >= 0 ? e : e - 2) / 3;   // floor(e / 3)
-  return std::ldexp(std::cbrt(std::ldexp(x, -3 * k)), k);
-}
-
 // The edges of the regular simplex of the given volume (area in 2D) and orientation sign: the
 // "source" of a cell measured against the ideal element.
 template <int n>

@@ -142,6 +142,18 @@ inline double unit_scale(double largest)
   return largest > 0 && std::isfinite(largest) ? std::ldexp(1., (std::min)(-std::ilogb(largest), 1023)) : 1.;
 }
 
+// The cube root of x > 0 taken on x scaled by a power of 8 into [1, 8): libm's cbrt is not
+// correctly rounded, and cbrt(8 x) may differ from 2 cbrt(x) in the last place; this one gives
+// the same digits for x and 8^k x, so that a mesh scaled by a power of two has the same ideal
+// cells and the same untangling barrier, scaled, and the same optimization (with the boundary
+// sliding, the last places of the start decided the result's fifth digit).
+inline double cbrt_by_octaves(double x)
+{
+  if(!(x > 0) || !std::isfinite(x)) return std::cbrt(x);
+  const int e = std::ilogb(x), k = (e >= 0 ? e : e - 2) / 3;   // floor(e / 3)
+  return std::ldexp(std::cbrt(std::ldexp(x, -3 * k)), k);
+}
+
 } // namespace internal
 } // namespace Distortion_optimization
 } // namespace CGAL

@@ -282,7 +282,10 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   // The first step moves a vertex by a tenth of a typical edge.
   double volume = 0;
   for(double v : problem.map.rest_volume) volume += v;
-  const double edge = std::pow(volume / nc * barrier.reference_det, 1. / n), floor = n == 2 ? 1e-9 : 1e-10;
+  // (Roots that give the same digits for a map scaled by a power of two, scaled: libm's pow and cbrt
+  // do not, and a map's untangling then depended on its size in the last places.)
+  const double size = volume / nc * barrier.reference_det, edge = n == 2 ? std::sqrt(size) : cbrt_by_octaves(size);
+  const double floor = n == 2 ? 1e-9 : 1e-10;
   double scale = 0;
   const std::vector<Vector<n>> start_targets = problem.map.target;
   std::vector<Vector<n>> best_targets = start_targets;
