@@ -101,10 +101,12 @@ std::string usage()
   "               one 0-based vertex index per line. With free border vertices the boundary is\n"
   "               kept from crossing itself (global injectivity), unless the start's crosses\n"
   "               itself already: then a warning, and cells are kept from inverting only\n"
-  "  --iterations largest number of iterations, each a local sweep and a global step (default 100)\n"
+  "  --iterations largest number of iterations, each a local sweep and a global step (default 100);\n"
+  "               0: the start is only evaluated, not moved (untangled with --untangle)\n"
   "  --threshold  stop when an iteration lowers the energy by less than this fraction of the\n"
   "               energy above its value on rigid maps (above 0 with arap or dirichlet in the\n"
-  "               measure, which are finite on flat cells) (default 1e-4)\n"
+  "               measure, which are finite on flat cells) (default 1e-4); the first iteration's\n"
+  "               from the energy after the harmonic start (the report's harmonic_start_energy)\n"
   "  --solver     gd (default, gradient descent) or bfgs, for each vertex's local problem\n"
   "  --vertex-weights  a file of one positive weight per line, per vertex in the source's order\n"
   "               (the paper's omega(v), eq. 23; default 1)\n"
@@ -132,7 +134,8 @@ std::string usage()
   "               the default with the other newton ones, which adds a local sweep to an\n"
   "               iteration that gains too little or is cut short) or local (the paper's sweeps)\n"
   "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
-  "               seconds); the default when stderr is a terminal; --quiet: none\n"
+  "               seconds; with --untangle the untangling's rounds first, their energy the\n"
+  "               barrier's); the default when stderr is a terminal; --quiet: none\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
   "               started, and write that map (the report says stopped_by_time_limit); a limit\n"
   "               reached while untangling, cells still inverted, fails (status 1)\n"
@@ -256,17 +259,25 @@ void check_files(const Command_line& c)
   if(!c.flat_output.empty()) outputs.emplace_back("--flat-output", c.flat_output);
   if(!c.svg.empty()) outputs.emplace_back("--svg", c.svg);
   if(!c.energy_plot.empty()) outputs.emplace_back("--energy-plot", c.energy_plot);
+  // A TetGen mesh is read from both files of its pair, whichever was named.
+  for(const std::string option : {"--source", "--target"}) {
+    const std::string path = option == "--source" ? c.source : c.target, e = DO::IO::internal::extension(path);
+    if(e == "ele" || e == "node")
+      inputs.emplace_back(option + " (its ." + (e == "ele" ? "node" : "ele") + ")",
+                          path.substr(0, path.size() - e.size()) + (e == "ele" ? "node" : "ele"));
+  }
+  const auto shown = [](const std::string& path) { return DO::IO::internal::printable(path); };
   for(const auto& [option, path] : inputs) {
     struct stat s;
-    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
+    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + shown(path) + " is a folder, not a file");
   }
   for(std::size_t i = 0; i < outputs.size(); ++i) {
     const auto& [option, path] = outputs[i];
     struct stat s;
-    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + path + " is a folder, not a file");
+    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + shown(path) + " is a folder, not a file");
     const File_identity id = identify(path);
     for(const auto& [other, other_path] : inputs)
-      if(identify(other_path) == id) throw Usage_error(option + " " + path + " is the file given as " + other + ": it would be overwritten");
+      if(identify(other_path) == id) throw Usage_error(option + " " + shown(path) + " is the file given as " + other + ": it would be overwritten");
     for(std::size_t j = 0; j < i; ++j)
       if(identify(outputs[j].second) == id) throw Usage_error(option + " and " + outputs[j].first + " name the same file");
   }

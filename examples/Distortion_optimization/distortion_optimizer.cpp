@@ -158,7 +158,7 @@ public:
     : show_(c.verbose || (!c.quiet && ::isatty(STDERR_FILENO))), limit_(c.time_limit), state_(std::make_shared<State>()) {}
 
   // The untangling's rounds (with --untangle) come first, their energy the barrier's; the
-  // optimization's iterations then start again from 1.
+  // optimization's iterations then start again from 1, under a line that says so.
   bool operator()(std::size_t iteration, double energy, std::size_t inverted) const
   {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - state_->start).count();
@@ -166,6 +166,8 @@ public:
       char decrease[32] = "-";   // the visitor is not told the start's energy
       if(state_->iteration == 0)
         std::fprintf(stderr, "%9s %18s %11s %9s %9s\n", "iteration", "energy", "decrease", "seconds", "inverted");
+      else if(iteration <= state_->iteration)
+        std::fprintf(stderr, "(above: untangling rounds, the energy the untangling barrier's; below: the optimization)\n");
       if(iteration > state_->iteration && state_->iteration > 0)
         std::snprintf(decrease, sizeof decrease, "%.3e", (state_->energy - energy) / std::abs(state_->energy));
       std::fprintf(stderr, "%9zu %18.10g %11s %9.3f %9zu\n", iteration, energy, decrease, seconds, inverted);
@@ -230,6 +232,7 @@ void report(const Command_line& c, std::size_t cells, std::size_t vertices, cons
   std::ostringstream json;
   json << "{\n  \"cells\": " << cells << ",\n  \"vertices\": " << vertices
        << ",\n  \"measure\": \"" << measure_name << "\",\n  \"initial_energy\": " << json_number(r.initial_energy)
+       << ",\n  \"harmonic_start_energy\": " << json_number(r.harmonic_start_energy)
        << ",\n  \"final_energy\": " << json_number(r.final_energy) << ",\n  \"sweeps\": " << r.iterations
        << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"inverted_cells\": " << r.inverted_cells
        << ",\n  \"converged\": " << (r.converged ? "true" : "false")
@@ -319,6 +322,14 @@ int run_triangles(const Command_line& c)
     const DO::IO::Triangle_soup target = DO::IO::read_triangle_soup(c.target);
     check_same_cells(c.target, source.points, source.cells, target.points, target.cells, "face");
     const std::vector<std::array<double, 2>> texture = DO::IO::per_vertex_texture_coordinates(target, c.target);
+    // A planar source's target may be its map by its positions (z = 0) as well as by its UVs: the
+    // UVs are the map only where the positions are the source's own (a surface with its UVs, as
+    // the tool writes one); planar positions elsewhere make it ambiguous.
+    if(!texture.empty() && planar && target.points != source.points &&
+       std::all_of(target.points.begin(), target.points.end(), [](const std::array<double, 3>& p) { return p[2] == 0; }))
+      throw DO::Invalid_input(DO::IO::internal::printable(c.target) + ": both its positions (planar, not the source's) and its UVs "
+                              "(f v/vt) could be the map of the planar source: write the map as positions without UVs, or as "
+                              "UVs with the source's positions");
     for(std::size_t i = 0; i < target.points.size(); ++i) {
       if(!texture.empty()) {
         uv[Vertex(i)] = K::Point_2(texture[i][0], texture[i][1]);

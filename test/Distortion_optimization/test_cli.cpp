@@ -20,6 +20,7 @@
 #include <map>
 #include <random>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -187,6 +188,16 @@ TEST(CommandLine, OptimizesAPlanarPairAndReportsJson)
       EXPECT_EQ(out.points[i][1], in.points[i][1]);
     }
   }
+
+  // The first iteration is measured from the energy after the harmonic start, reported as such;
+  // no iteration is no move (the harmonic start moved the whole interior before).
+  EXPECT_LT(json_value(json, "harmonic_start_energy"), json_value(json, "initial_energy"));
+  EXPECT_GE(json_value(json, "harmonic_start_energy"), json_value(json, "final_energy"));
+  ASSERT_EQ(run("--source " + s + " --target " + t + " --output " + o + " --measure symmetric_dirichlet --iterations 0 --report " + r).status, 0);
+  EXPECT_EQ(IO::read_triangle_soup(o).points, in.points);
+  const std::string evaluated = slurp(r);
+  EXPECT_EQ(json_value(evaluated, "final_energy"), json_value(json, "initial_energy"));
+  EXPECT_EQ(json_value(evaluated, "harmonic_start_energy"), json_value(json, "initial_energy"));
 }
 
 TEST(CommandLine, FixFileAndFreeBoundary)
@@ -252,6 +263,10 @@ TEST(CommandLine, UntangleThenOptimize)
   }
   const std::size_t rounds = static_cast<std::size_t>(json_value(json, "untangle_iterations"));
   ASSERT_EQ(rows.size(), rounds + static_cast<std::size_t>(json_value(json, "sweeps"))) << result.output;
+  // Between the two, a line that tells them apart (the barrier's energy may rise from round to round).
+  const std::size_t between = result.output.find("(above: untangling rounds");
+  ASSERT_NE(between, std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("(above: untangling rounds", between + 1), std::string::npos) << result.output;
   EXPECT_GT(rounds, 0u) << result.output;
   for(std::size_t i = 0; i < rows.size(); ++i) {
     EXPECT_EQ(rows[i].first, i < rounds ? i + 1 : i - rounds + 1) << result.output;
@@ -366,6 +381,29 @@ TEST(CommandLine, ASurfaceMapIsWrittenAsUVsAndReadBack)
             std::string::npos) << result.output;
   EXPECT_EQ(run("--source " + temp("none.mesh") + " --target " + temp("none2.mesh") + " --output " + temp("x.mesh") +
                 " --flat-output " + f).status, 2);   // tetrahedra have no flat output
+
+  // A planar source: an OBJ target with the source's positions gives the map by its UVs, as a
+  // surface's does; one whose planar positions are another map as well is ambiguous (its UVs
+  // silently replaced the positions).
+  const std::string ps = temp("uv_s.off"), pt = temp("uv_t.off"), uvs = temp("uv_t.obj"), both = temp("uv_both.obj");
+  write_planar_pair(ps, pt);
+  const IO::Triangle_soup planar_source = IO::read_triangle_soup(ps), planar_target = IO::read_triangle_soup(pt);
+  IO::Triangle_soup with_uvs = planar_source;
+  for(const auto& p : planar_target.points) with_uvs.texture_coordinates.push_back({p[0], p[1]});
+  with_uvs.cell_texture_indices = with_uvs.cells;
+  IO::write_triangle_soup(uvs, with_uvs);
+  with_uvs.points = planar_target.points;
+  with_uvs.texture_coordinates.assign(with_uvs.points.size(), {0.5, 0.5});
+  IO::write_triangle_soup(both, with_uvs);
+  const std::string common = " --output " + o2 + " --iterations 0 --harmonic-start off --report " + r2;
+  ASSERT_EQ(run("--source " + ps + " --target " + pt + common).status, 0);
+  const double by_positions = json_value(slurp(r2), "initial_energy");
+  result = run("--source " + ps + " --target " + uvs + common);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(json_value(slurp(r2), "initial_energy"), by_positions);
+  result = run("--source " + ps + " --target " + both + common);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("could be the map of the planar source"), std::string::npos) << result.output;
 }
 
 // The Float64 values of the VTU array named `name` (or of the Points array for "Points").
@@ -412,6 +450,34 @@ TEST(CommandLine, PicturesAndDisplacements)
   for(std::size_t i = 0; i < positions.size(); ++i)
     EXPECT_NEAR(positions[i] - displacement[i], source.points[i / 3][i % 3], 1e-14) << i;
   EXPECT_EQ(vtu_array(vtu, "conformal").size(), 288u);
+
+  // The map's colours are the same with the source drawn beside it (the scale's percentile counted
+  // every cell twice, and moved), and the plot's iterations are labelled at whole numbers, once.
+  const std::string single = temp("pic_single.svg"), plot2 = temp("pic_plot2.svg");
+  result = run("--source " + s + " --target " + t + " --output " + temp("pic2.off") + " --svg " + single +
+               " --measure conformal --iterations 7 --threshold 0 --harmonic-start off");
+  ASSERT_EQ(result.status, 0) << result.output;
+  result = run("--source " + s + " --target " + t + " --output " + temp("pic3.off") + " --energy-plot " + plot2 +
+               " --measure conformal --iterations 2 --threshold 0 --harmonic-start off");
+  ASSERT_EQ(result.status, 0) << result.output;
+  const auto fills = [](const std::string& picture) {
+    std::vector<std::string> all;
+    const std::regex fill("<polygon [^>]*fill=\"(#[0-9a-f]{6})\"");
+    for(auto i = std::sregex_iterator(picture.begin(), picture.end(), fill); i != std::sregex_iterator(); ++i) all.push_back((*i)[1]);
+    std::sort(all.begin(), all.end());
+    return all;
+  };
+  const std::vector<std::string> alone = fills(slurp(single)), beside = fills(svg);
+  ASSERT_EQ(beside.size(), 2 * alone.size());
+  std::vector<std::string> twice;
+  for(const std::string& f : alone) twice.insert(twice.end(), {f, f});
+  EXPECT_EQ(beside, twice);
+  EXPECT_GT(std::set<std::string>(alone.begin(), alone.end()).size(), 10u);
+  std::vector<std::pair<std::string, std::string>> ticks;   // (x, label) under the axis
+  const std::string two = slurp(plot2);
+  const std::regex tick("<text x=\"([0-9.]+)\" y=\"348\" text-anchor=\"middle\">([^<]*)</text>");
+  for(auto i = std::sregex_iterator(two.begin(), two.end(), tick); i != std::sregex_iterator(); ++i) ticks.emplace_back((*i)[1], (*i)[2]);
+  EXPECT_EQ(ticks, (std::vector<std::pair<std::string, std::string>>{{"80", "0"}, {"320", "1"}, {"560", "2"}}));
 
   // A tetrahedral map: the sections of the source and of the map by their middle planes.
   const std::string m = temp("pic_cube.mesh"), ts = temp("pic_tets.svg");
@@ -720,6 +786,16 @@ TEST(CommandLine, ErrorsAreOneLine)
     EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
     EXPECT_NE(result.output.find("run with --help for the usage"), std::string::npos) << result.output;
   }
+  // Output names are quoted as input names are, control bytes escaped: one line still.
+  const std::string s = temp("s_lines.off"), t = temp("t_lines.off");
+  write_planar_pair(s, t);
+  for(const std::string& output : {"--output '" + temp("no\nsuch") + "/o.off'", "--output " + temp("o_lines.off") + " --report '" +
+                                  temp("no\nsuch") + "/r.json'"}) {
+    const Tool_run result = run("--source " + s + " --target " + t + " " + output);
+    EXPECT_EQ(result.status, 1) << result.output;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+    EXPECT_NE(result.output.find("no\\x0asuch"), std::string::npos) << result.output;
+  }
 }
 
 TEST(CommandLine, CountsMeasuresAndFoldersAreCheckedBeforeAnyWork)
@@ -760,6 +836,37 @@ TEST(CommandLine, NoOutputNamesAnInputOrAnotherOutput)
   }
   EXPECT_EQ(slurp(s), source);
   EXPECT_EQ(slurp(t), target);
+
+  // A TetGen mesh is read from its .node and its .ele, whichever is named: --report, which takes
+  // any name, overwrote the other one (exit 0).
+  const IO::Tetrahedron_soup cube = kuhn_block(2);
+  const auto write_tetgen = [&](const std::string& stem, double stretch) {
+    std::ofstream node(stem + ".node"), ele(stem + ".ele");
+    node << cube.points.size() << " 3 0 0\n";
+    for(std::size_t v = 0; v < cube.points.size(); ++v)
+      node << v << ' ' << stretch * cube.points[v][0] << ' ' << cube.points[v][1] << ' ' << cube.points[v][2] << '\n';
+    ele << cube.cells.size() << " 4 0\n";
+    for(std::size_t c = 0; c < cube.cells.size(); ++c)
+      ele << c << ' ' << cube.cells[c][0] << ' ' << cube.cells[c][1] << ' ' << cube.cells[c][2] << ' ' << cube.cells[c][3] << '\n';
+  };
+  const std::string ts = temp("tetgen_s"), tt = temp("tetgen_t"), mesh = temp("tetgen_o.mesh");
+  write_tetgen(ts, 1);
+  write_tetgen(tt, 2);
+  const std::string node = slurp(ts + ".node"), target_node = slurp(tt + ".node"), ele = slurp(ts + ".ele");
+  for(const std::string& bad : {" --report " + ts + ".node", " --report " + tt + ".node", " --source " + ts + ".node --report " + ts + ".ele"}) {
+    std::remove(mesh.c_str());
+    const std::string arguments = (bad.find("--source") == std::string::npos ? "--source " + ts + ".ele" : std::string()) +
+                                  " --target " + tt + ".ele --output " + mesh + " --fix none" + bad;
+    const Tool_run result = run(arguments);
+    EXPECT_EQ(result.status, 2) << arguments << "\n" << result.output;
+    EXPECT_NE(result.output.find("it would be overwritten"), std::string::npos) << result.output;
+    EXPECT_FALSE(exists(mesh)) << bad;
+  }
+  EXPECT_EQ(slurp(ts + ".node"), node);
+  EXPECT_EQ(slurp(tt + ".node"), target_node);
+  EXPECT_EQ(slurp(ts + ".ele"), ele);
+  const Tool_run good = run("--source " + ts + ".ele --target " + tt + ".node --output " + mesh + " --fix none --iterations 1");
+  EXPECT_EQ(good.status, 0) << good.output;
 }
 
 TEST(CommandLine, AllOutputsOrNoneAndNoFileOfTheUserTouched)

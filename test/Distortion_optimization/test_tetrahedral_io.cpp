@@ -1053,6 +1053,67 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   EXPECT_EQ(message("x.vtp", "whatever"), ": unsupported extension (use .off, .obj, .ply, .stl or .ts)");
 }
 
+// What CGAL's readers take without a word, each of which dropped or misplaced triangles: a binary
+// PLY or STL longer than its header announces (the extra faces were dropped), text after an ASCII
+// STL's endsolid, GOCAD vertex ids out of order (CGAL numbers vertices as they come, so triangles
+// were joined to other vertices) or vertices repeated by ATOM; and face indices CGAL cannot read,
+// which it told on std::cerr only.
+TEST(Readers, FilesHoldExactlyWhatTheirHeadersAnnounce)
+{
+  const auto message = [](const std::string& name, const std::string& text) {
+    const std::string path = temp(name);
+    std::ofstream(path, std::ios::binary) << text;
+    try {
+      IO::read_triangle_soup(path);
+    } catch(const DO::Invalid_input& e) {
+      const std::string what = e.what();
+      return what.substr(0, path.size()) == path ? what.substr(path.size()) : what;
+    }
+    return std::string("no error");
+  };
+  const auto bytes = [](const auto& values) { return std::string(reinterpret_cast<const char*>(&values), sizeof values); };
+  // Two triangles of a square, binary little-endian (x86's own order), with its faces announced.
+  const auto binary_ply = [&](int announced, const std::string& index_type) {
+    std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                      "property float z\nproperty uchar red\nelement face " + std::to_string(announced) +
+                      "\nproperty list uchar " + index_type + " vertex_indices\nend_header\n";
+    for(const auto& p : std::vector<std::array<float, 3>>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})
+      ply += bytes(p) + std::string(1, '\x7f');
+    for(const auto& f : std::vector<std::array<std::int32_t, 3>>{{0, 1, 2}, {0, 2, 3}}) ply += std::string(1, '\3') + bytes(f);
+    return ply;
+  };
+  EXPECT_EQ(message("two.ply", binary_ply(2, "int")), "no error");
+  EXPECT_EQ(message("space.ply", binary_ply(2, "int") + "\n"), "no error");
+  EXPECT_EQ(message("fewer.ply", binary_ply(1, "int")), ": content after the 5 elements the header announces (byte 253 of 266)");
+  EXPECT_EQ(message("short.ply", binary_ply(2, "ushort")), ": face vertex indices of type ushort (CGAL's PLY reader takes int or uint)");
+  std::string unnamed = binary_ply(2, "int");
+  unnamed.replace(unnamed.find("vertex_indices"), 14, "corners");
+  EXPECT_EQ(message("unnamed.ply", unnamed), ": the faces have no list property vertex_indices (or vertex_index)");
+
+  std::string stl(80, ' ');
+  stl += bytes(std::uint32_t(1));
+  stl += bytes(std::array<float, 12>{0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}) + bytes(std::uint16_t(0));
+  EXPECT_EQ(message("one.stl", stl), "no error");
+  EXPECT_EQ(message("longer.stl", stl + stl.substr(84)),
+            ": neither ASCII STL nor binary STL: the header announces 1 facets (134 bytes), the file has 184 bytes");
+  const std::string text = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+                           "endsolid s\n";
+  EXPECT_EQ(message("text.stl", text), "no error");
+  EXPECT_EQ(message("second.stl", text + text), ":10: content after endsolid");
+
+  const std::string ts = "GOCAD TSurf 1\nHEADER {\nname:t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n";
+  std::string swapped = ts;
+  swapped.replace(swapped.find("VRTX 2 1 0 0\nVRTX 3 0 1 0"), 25, "VRTX 3 0 1 0\nVRTX 2 1 0 0");
+  EXPECT_EQ(message("swapped.ts", swapped), ":7: vertex id 3 where 2 was expected (the ids must follow each other, as they are numbered in order)");
+  std::string atom = ts;
+  atom.replace(atom.find("TRGL"), 0, "ATOM 4 1\n");
+  EXPECT_EQ(message("atom.ts", atom), ":9: ATOM (a vertex repeated by id) is not supported");
+  std::string zero = ts;
+  for(const char* id : {"VRTX 1", "VRTX 2", "VRTX 3"}) zero.replace(zero.find(id) + 5, 1, std::string(1, id[5] - 1));
+  zero.replace(zero.find("TRGL 1 2 3"), 10, "TRGL 0 1 2");
+  EXPECT_EQ(message("zero.ts", zero), "no error");   // ids from 0 are as good as from 1
+}
+
 TEST(TetGen, ReadsBothBasesQuadraticCellsAndRefusesMalformedPairs)
 {
   const auto read = [](const std::string& node, const std::string& ele) {

@@ -18,6 +18,9 @@ struct Result
 {
   double initial_energy = 0;                 ///< energy of the start map (after the untangling, if any)
   double final_energy = 0;                   ///< energy of the returned map
+  /// energy the iterations start from, which the convergence threshold measures the first one
+  /// against: after the harmonic start (`use_harmonic_start`) where it was taken, else `initial_energy`
+  double harmonic_start_energy = 0;
   std::vector<double> energy_per_iteration;  ///< energy after each iteration (sweep)
   std::size_t iterations = 0;                ///< iterations (sweeps over the free vertices) done
   double seconds = 0;                        ///< wall-clock time of the optimization, untangling included

@@ -318,7 +318,7 @@ inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& so
 {
   const auto check_labels = [&](std::size_t labels, std::size_t entries, const char* what) {
     if(labels != 0 && labels != entries)
-      throw Invalid_input(path + ": " + std::to_string(labels) + " labels for " + std::to_string(entries) + " " + what);
+      throw Invalid_input(internal::printable(path) + ": " + std::to_string(labels) + " labels for " + std::to_string(entries) + " " + what);
   };
   check_labels(soup.labels.size(), soup.cells.size(), "tetrahedra");
   check_labels(soup.point_labels.size(), soup.points.size(), "vertices");
@@ -328,16 +328,16 @@ inline void write_MEDIT_soup(const std::string& path, const Tetrahedron_soup& so
       const auto& s = simplices[c];
       for(std::size_t i = 0; i < s.size(); ++i) {
         if(s[i] >= soup.points.size())
-          throw Invalid_input(path + ": " + entry + " " + std::to_string(c) + " has vertex index " + std::to_string(s[i]) + " out of range");
+          throw Invalid_input(internal::printable(path) + ": " + entry + " " + std::to_string(c) + " has vertex index " + std::to_string(s[i]) + " out of range");
         for(std::size_t j = 0; j < i; ++j)
-          if(s[j] == s[i]) throw Invalid_input(path + ": " + entry + " " + std::to_string(c) + " repeats vertex " + std::to_string(s[i]));
+          if(s[j] == s[i]) throw Invalid_input(internal::printable(path) + ": " + entry + " " + std::to_string(c) + " repeats vertex " + std::to_string(s[i]));
       }
     }
   };
   check_simplices(soup.triangles, "triangle");
   for(std::size_t v = 0; v < soup.points.size(); ++v)
     for(double x : soup.points[v])
-      if(!std::isfinite(x)) throw Invalid_input(path + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+      if(!std::isfinite(x)) throw Invalid_input(internal::printable(path) + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
   check_simplices(soup.cells, "tetrahedron");
   // Formatted into memory with std::to_chars (the shortest decimals that read back the same
   // doubles), then written at once: through the stream's locale, each number took a virtual call.

@@ -165,19 +165,24 @@ inline Svg_panel cross_section_panel(const std::string& title, const std::vector
 /// file cannot be written.
 inline void write_SVG(const std::string& path, const std::vector<Svg_panel>& panels, const std::string& value_name)
 {
-  if(panels.empty()) throw Invalid_input(path + ": no panel to draw");
+  if(panels.empty()) throw Invalid_input(internal::printable(path) + ": no panel to draw");
   std::vector<double> finite;
   std::size_t infinite = 0;
-  for(const Svg_panel& panel : panels) {
+  for(std::size_t k = 0; k < panels.size(); ++k) {
+    const Svg_panel& panel = panels[k];
     if(panel.values.size() != panel.polygons.size())
-      throw Invalid_input(path + ": panel '" + panel.title + "' has " + std::to_string(panel.values.size()) + " values for " +
+      throw Invalid_input(internal::printable(path) + ": panel '" + panel.title + "' has " + std::to_string(panel.values.size()) + " values for " +
                           std::to_string(panel.polygons.size()) + " polygons");
     for(const auto& polygon : panel.polygons)
       for(const auto& p : polygon)
         if(!std::isfinite(p[0]) || !std::isfinite(p[1]))
-          throw Invalid_input(path + ": panel '" + panel.title + "' has a non-finite coordinate");
+          throw Invalid_input(internal::printable(path) + ": panel '" + panel.title + "' has a non-finite coordinate");
+    for(double v : panel.values)
+      if(std::isnan(v)) throw Invalid_input(internal::printable(path) + ": panel '" + panel.title + "' has a NaN value");
+    // A panel showing the values of an earlier one (a map's cells drawn on its source and on its
+    // target) counts once: the scale and the red count are the cells', whatever is drawn.
+    if(std::any_of(panels.begin(), panels.begin() + k, [&](const Svg_panel& other) { return other.values == panel.values; })) continue;
     for(double v : panel.values) {
-      if(std::isnan(v)) throw Invalid_input(path + ": panel '" + panel.title + "' has a NaN value");
       if(std::isinf(v)) ++infinite;
       else finite.push_back(v);
     }
@@ -263,7 +268,7 @@ inline void write_SVG(const std::string& path, const std::vector<Svg_panel>& pan
 /// cannot be written.
 inline void write_energy_plot_SVG(const std::string& path, const std::vector<double>& energies, const std::string& name)
 {
-  if(energies.empty()) throw Invalid_input(path + ": no energy to plot");
+  if(energies.empty()) throw Invalid_input(internal::printable(path) + ": no energy to plot");
   std::vector<double> finite;
   for(double e : energies)
     if(std::isfinite(e)) finite.push_back(e);
@@ -281,10 +286,16 @@ inline void write_energy_plot_SVG(const std::string& path, const std::vector<dou
         << "\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << left + w / 2 << "\" y=\"18\" text-anchor=\"middle\">" << internal::xml_escaped(name) << "</text>\n"
         << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << w << "\" height=\"" << h << "\" fill=\"none\" stroke=\"#333\"/>\n";
+    // Five ticks on each axis: energies only where they differ (one label for a constant energy),
+    // iterations at whole numbers, each once.
+    double last_tick = -1;
     for(int k = 0; k <= 4; ++k) {
-      const double e = log_scale ? lo * std::exp(range * k / 4) : lo + range * k / 4, i = n * k / 4;
-      out << "<text x=\"" << left - 6 << "\" y=\"" << y(e) + 4 << "\" text-anchor=\"end\">" << internal::label(e) << "</text>\n"
-          << "<text x=\"" << x(i) << "\" y=\"" << top + h + 18 << "\" text-anchor=\"middle\">" << internal::label(std::round(i)) << "</text>\n";
+      const double e = log_scale ? lo * std::exp(range * k / 4) : lo + range * k / 4, i = std::round(n * k / 4);
+      if(hi > lo || k == 0)
+        out << "<text x=\"" << left - 6 << "\" y=\"" << y(hi > lo ? e : lo) + 4 << "\" text-anchor=\"end\">" << internal::label(hi > lo ? e : lo) << "</text>\n";
+      if(i > last_tick && i <= energies.size() - 1. + 0.5)
+        out << "<text x=\"" << x(i) << "\" y=\"" << top + h + 18 << "\" text-anchor=\"middle\">" << internal::label(i) << "</text>\n";
+      last_tick = i;
     }
     out << "<text x=\"" << left + w / 2 << "\" y=\"" << top + h + 42 << "\" text-anchor=\"middle\">iteration"
         << (log_scale ? " (energy on a log scale)" : "") << "</text>\n";

@@ -249,9 +249,90 @@ inline std::vector<std::array<double, 2>> per_vertex_texture_coordinates(const T
 
 namespace internal {
 
+// A binary PLY body must hold exactly the elements its header announces: CGAL's reader stops
+// after them, silently dropping whatever follows (a face more than the header counts). Walks the
+// body by the properties' sizes (a list by its count); a header it cannot follow is left to CGAL.
+inline void check_binary_PLY_length(const std::string& bytes, const std::string& shown, std::size_t header_end)
+{
+  const auto size_of = [](const std::string& type) -> std::size_t {
+    if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") return 4;
+    if(type == "double" || type == "float64") return 8;
+    return 0;
+  };
+  struct Property { std::size_t size = 0, count_size = 0, item_size = 0; };   // a list: count_size > 0
+  struct Element { unsigned long long count = 0; std::vector<Property> properties; };
+  std::vector<Element> elements;
+  bool big_endian = false;
+  std::istringstream header(bytes.substr(0, header_end));
+  for(std::string line; std::getline(header, line);) {
+    std::istringstream words(line);
+    std::string word, a, b;
+    words >> word;
+    if(word == "format") big_endian = (words >> a) && a == "binary_big_endian";
+    else if(word == "element") {
+      elements.emplace_back();
+      if(!(words >> a >> elements.back().count)) return;
+    } else if(word == "property") {
+      if(elements.empty() || !(words >> a)) return;
+      Property p;
+      if(a == "list") {
+        if(!(words >> a >> b)) return;
+        p.count_size = size_of(a);
+        p.item_size = size_of(b);
+        if(p.count_size == 0 || p.item_size == 0) return;
+      } else if((p.size = size_of(a)) == 0) {
+        return;
+      }
+      elements.back().properties.push_back(p);
+    }
+  }
+  const std::size_t body = bytes.find('\n', header_end);
+  if(body == std::string::npos) return;
+  std::size_t at = body + 1;
+  const auto count_at = [&](std::size_t position, std::size_t size) {
+    unsigned long long value = 0;
+    for(std::size_t k = 0; k < size; ++k)
+      value = value << 8 | static_cast<unsigned char>(bytes[position + (big_endian ? k : size - 1 - k)]);
+    return value;
+  };
+  for(const Element& element : elements) {
+    const bool has_list = std::any_of(element.properties.begin(), element.properties.end(), [](const Property& p) { return p.count_size > 0; });
+    if(!has_list) {   // fixed-size instances: all at once
+      std::size_t size = 0;
+      for(const Property& p : element.properties) size += p.size;
+      if(size > 0 && element.count > (bytes.size() - std::min(at, bytes.size())) / size) return;   // truncated: CGAL's reader tells
+      at += static_cast<std::size_t>(element.count) * size;
+      continue;
+    }
+    for(unsigned long long i = 0; i < element.count; ++i)
+      for(const Property& p : element.properties) {
+        if(p.count_size == 0) {
+          at += p.size;
+          continue;
+        }
+        if(at + p.count_size > bytes.size()) return;
+        const unsigned long long n = count_at(at, p.count_size);
+        at += p.count_size;
+        if(n > bytes.size() / p.item_size) return;
+        at += static_cast<std::size_t>(n) * p.item_size;
+        if(at > bytes.size()) return;
+      }
+  }
+  if(at < bytes.size() && bytes.find_first_not_of(" \t\r\n", at) != std::string::npos) {
+    unsigned long long announced = 0;
+    for(const Element& element : elements) announced += element.count;
+    throw Invalid_input(shown + ": content after the " + std::to_string(announced) + " elements the header announces (byte " +
+                        std::to_string(at) + " of " + std::to_string(bytes.size()) + ")");
+  }
+}
+
 // The checks on a file's bytes that CGAL's PLY, STL and GOCAD readers do not make: content after
-// the elements an ASCII PLY header announces, or after a GOCAD file's last END (both ignored by
-// them), and non-finite STL coordinates (CGAL merges equal corners through comparisons, and a NaN
+// the elements a PLY header announces, after a binary STL's facets or an ASCII STL's first
+// endsolid, or after a GOCAD file's last END (all ignored by them); GOCAD vertex ids out of order
+// and ATOM vertices (misnumbered by them); PLY face indices they cannot read (said on std::cerr
+// only); and non-finite STL coordinates (CGAL merges equal corners through comparisons, and a NaN
 // compares equal to every point). A GOCAD file's carriage returns are dropped: its reader takes
 // "END\r" for an unknown keyword.
 inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, const std::string& e)
@@ -278,20 +359,50 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
     }
     for(std::size_t j = last_end + 1; j < lines.size(); ++j)
       if(!blank(lines[j])) after(j, "the last surface's END");
+    // CGAL's reader numbers the vertices in the order they come, from the first one's id: ids
+    // out of that order would join triangles to the wrong vertices, silently.
+    long long expected = 0;
+    bool first = true;
+    for(std::size_t i = 0; i < lines.size(); ++i) {
+      std::istringstream words(lines[i]);
+      std::string word;
+      long long id = 0;
+      if(!(words >> word)) continue;
+      if(word == "ATOM" || word == "PATOM")
+        throw Invalid_input(shown + ":" + std::to_string(i + 1) + ": " + word + " (a vertex repeated by id) is not supported");
+      if((word != "VRTX" && word != "PVRTX") || !(words >> id)) continue;
+      if(!first && id != expected)
+        throw Invalid_input(shown + ":" + std::to_string(i + 1) + ": vertex id " + std::to_string(id) + " where " +
+                            std::to_string(expected) + " was expected (the ids must follow each other, as they are numbered in order)");
+      first = false;
+      expected = id + 1;
+    }
   } else if(e == "ply") {
     const std::size_t header_end = bytes.find("end_header");
     if(bytes.compare(0, 3, "ply") != 0 || header_end == std::string::npos) return;   // CGAL's reader tells
-    bool ascii = false;
+    bool ascii = false, faces = false;
     std::size_t elements = 0;
+    std::string element, index_type;   // the element being declared; the type of the faces' vertex indices
     for(const std::string& line : split(bytes.substr(0, header_end))) {
       std::istringstream words(line);
-      std::string word, name;
+      std::string word, name, count_type, type;
       unsigned long long count = 0;
       words >> word;
       if(word == "format") ascii = (words >> name) && name == "ascii";
-      if(word == "element" && (words >> name >> count)) elements += static_cast<std::size_t>(count);
+      if(word == "element" && (words >> element >> count)) {
+        elements += static_cast<std::size_t>(count);
+        faces = faces || element == "face" || element == "faces";
+      }
+      if(word == "property" && (element == "face" || element == "faces") && (words >> name >> count_type >> type) &&
+         name == "list" && (words >> name) && (name == "vertex_indices" || name == "vertex_index"))
+        index_type = type;
     }
-    if(!ascii) return;
+    // CGAL's reader takes 32-bit indices only, and says so on std::cerr alone.
+    if(faces && index_type.empty())
+      throw Invalid_input(shown + ": the faces have no list property vertex_indices (or vertex_index)");
+    if(faces && index_type != "int" && index_type != "uint" && index_type != "int32" && index_type != "uint32")
+      throw Invalid_input(shown + ": face vertex indices of type " + printable(index_type) + " (CGAL's PLY reader takes int or uint)");
+    if(!ascii) return check_binary_PLY_length(bytes, shown, header_end);
     // The lines after end_header's, numbered in the whole file.
     const std::size_t first = 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + header_end, '\n'));
     const std::size_t body = bytes.find('\n', header_end);
@@ -316,10 +427,30 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
         }
       return;
     }
+    // Not a binary STL of the facets its header announces: ASCII, whose reader stops at the first
+    // endsolid (CGAL's binary one, tried first, would take the announced facets of a longer file).
+    const std::size_t start = bytes.find_first_not_of(" \t\r\n");
+    const bool text = std::none_of(bytes.begin(), bytes.end(), [](char c) { return c == '\0'; });
+    if(!text || start == std::string::npos || bytes.compare(start, 5, "solid") != 0) {
+      if(bytes.size() >= 84)
+        throw Invalid_input(shown + ": neither ASCII STL nor binary STL: the header announces " + std::to_string(word(80)) +
+                            " facets (" + std::to_string(84 + 50 * std::size_t(word(80))) + " bytes), the file has " +
+                            std::to_string(bytes.size()) + " bytes");
+      return;   // CGAL's reader tells
+    }
     std::istringstream words(bytes);
     std::size_t facet = 0;
     for(std::string w; words >> w;) {
       if(w == "endfacet") ++facet;
+      if(w == "endsolid") {
+        std::string rest;
+        std::getline(words, rest);   // the solid's name
+        if(words >> w) {
+          const std::size_t line = 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + std::streamoff(words.tellg()), '\n'));
+          after(line - 1, "endsolid");
+        }
+        break;
+      }
       if(w != "vertex") continue;
       for(int k = 0; k < 3 && (words >> w); ++k)
         if(!std::isfinite(std::strtod(w.c_str(), nullptr)))
@@ -353,17 +484,17 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
       return reader(in);
     };
     if(e == "ts") {
-      ok = read(CGAL::IO::ASCII, [&](std::istream& in) { return CGAL::IO::read_GOCAD(in, points, faces); });
+      ok = read(CGAL::IO::ASCII, [&](std::istream& in) { return CGAL::IO::read_GOCAD(in, points, faces, CGAL::parameters::verbose(false)); });
     } else if(e == "ply") {
-      ok = read(CGAL::IO::BINARY, [&](std::istream& in) { return CGAL::IO::read_PLY(in, points, faces); });
+      ok = read(CGAL::IO::BINARY, [&](std::istream& in) { return CGAL::IO::read_PLY(in, points, faces, CGAL::parameters::verbose(false)); });
     } else {
       // As CGAL's read_STL(file name): binary first, then ASCII.
-      ok = read(CGAL::IO::BINARY, [&](std::istream& in) { return CGAL::IO::read_STL(in, points, faces); });
+      ok = read(CGAL::IO::BINARY, [&](std::istream& in) { return CGAL::IO::read_STL(in, points, faces, CGAL::parameters::verbose(false)); });
       if(!ok) {
         points.clear();
         faces.clear();
         ok = read(CGAL::IO::ASCII, [&](std::istream& in) {
-          return CGAL::IO::read_STL(in, points, faces, CGAL::parameters::use_binary_mode(false));
+          return CGAL::IO::read_STL(in, points, faces, CGAL::parameters::use_binary_mode(false).verbose(false));
         });
       }
     }
@@ -427,9 +558,9 @@ inline Triangle_soup read_triangle_soup(const std::string& path)
 inline void write_triangle_soup(const std::string& path, const Triangle_soup& soup)
 {
   const std::string e = internal::extension(path);
-  if(e != "off" && e != "obj") throw Invalid_input(path + ": unsupported extension (use .off or .obj)");
+  if(e != "off" && e != "obj") throw Invalid_input(internal::printable(path) + ": unsupported extension (use .off or .obj)");
   const bool textured = !soup.cell_texture_indices.empty();
-  if(textured && e == "off") throw Invalid_input(path + ": OFF has no texture coordinates (use .obj)");
+  if(textured && e == "off") throw Invalid_input(internal::printable(path) + ": OFF has no texture coordinates (use .obj)");
   write_file_atomically(path, [&](std::ostream& out) {
     if(e == "off") {
       out << "OFF\n" << soup.points.size() << ' ' << soup.cells.size() << " 0\n";

@@ -10,6 +10,7 @@
 #define CGAL_DISTORTION_OPTIMIZATION_IO_WRITE_FILE_ATOMICALLY_H
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
 
 #include <algorithm>
 #include <array>
@@ -99,14 +100,14 @@ public:
     const std::size_t slash = place.find_last_of('/');
     std::string folder = slash == std::string::npos ? "" : place.substr(0, slash + 1);
     const std::string base = slash == std::string::npos ? place : place.substr(slash + 1);
-    if(base.empty()) throw Invalid_input(path + ": not a file name");
+    if(base.empty()) throw Invalid_input(internal::printable(path) + ": not a file name");
     if(special) {
       const char* tmp = std::getenv("TMPDIR");
       folder = std::string(tmp != nullptr && *tmp != 0 ? tmp : "/tmp") + "/";
     }
     std::string name = folder + "." + base + ".XXXXXX" + suffix;
     const int fd = ::mkstemps(&name[0], static_cast<int>(suffix.size()));
-    if(fd < 0) throw Invalid_input(path + ": cannot write (does the folder exist, and is it writable?)");
+    if(fd < 0) throw Invalid_input(internal::printable(path) + ": cannot write (does the folder exist, and is it writable?)");
     streamed_ = special;
     // mkstemp makes the file private (0600); give it the mode a new file of the user would have.
     const mode_t mask = ::umask(0);
@@ -139,11 +140,11 @@ public:
       {
         std::ifstream in(path_, std::ios::binary);
         std::ofstream out(place, std::ios::binary);
-        if(!in || !out || !(out << in.rdbuf()) || !out.flush()) throw Invalid_input(target + ": write error");
+        if(!in || !out || !(out << in.rdbuf()) || !out.flush()) throw Invalid_input(internal::printable(target) + ": write error");
       }
       return;   // the temporary file is removed by the destructor
     }
-    if(std::rename(path_.c_str(), place.c_str()) != 0) throw Invalid_input(target + ": cannot replace the file");
+    if(std::rename(path_.c_str(), place.c_str()) != 0) throw Invalid_input(internal::printable(target) + ": cannot replace the file");
     internal::Temporary_registry::get().remove(slot_);
     slot_ = -1;
     kept_ = true;
@@ -158,12 +159,12 @@ private:
     *special = false;
     if(::lstat(path.c_str(), &s) != 0) return path;   // a new file
     const bool link = S_ISLNK(s.st_mode);
-    if(link && ::stat(path.c_str(), &s) != 0) throw Invalid_input(path + ": a symbolic link to nothing");
-    if(S_ISDIR(s.st_mode)) throw Invalid_input(path + ": a folder, not a file name");
+    if(link && ::stat(path.c_str(), &s) != 0) throw Invalid_input(internal::printable(path) + ": a symbolic link to nothing");
+    if(S_ISDIR(s.st_mode)) throw Invalid_input(internal::printable(path) + ": a folder, not a file name");
     *special = !S_ISREG(s.st_mode);
     if(!link || *special) return path;   // a device is written through its name (/dev/stdout too)
     char* resolved = ::realpath(path.c_str(), nullptr);
-    if(resolved == nullptr) throw Invalid_input(path + ": cannot resolve the symbolic link");
+    if(resolved == nullptr) throw Invalid_input(internal::printable(path) + ": cannot resolve the symbolic link");
     const std::string place = resolved;
     std::free(resolved);
     return place;
@@ -212,11 +213,11 @@ inline void write_file_atomically(const std::string& path, const std::function<v
   Temporary_file temporary(path);
   {
     std::ofstream out(temporary.path(), std::ios::binary | std::ios::trunc);
-    if(!out) throw Invalid_input(path + ": cannot write (is the folder writable?)");
+    if(!out) throw Invalid_input(internal::printable(path) + ": cannot write (is the folder writable?)");
     out.imbue(std::locale(std::locale::classic(), new internal::Shortest_double_put));
     write(out);
     out.flush();
-    if(!out) throw Invalid_input(path + ": write error");
+    if(!out) throw Invalid_input(internal::printable(path) + ": write error");
   }
   temporary.rename_to(path);
 }

@@ -191,8 +191,11 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   result.initial_energy = energy;
   // A normalized measure is >= its value on rigid maps: measure progress against what is above it.
   const double floor = measure.is_normalized() ? value_on_rigid_maps<n>(measure) : 0.;
-  if(options.harmonic_start && steps.harmonic_start())
+  // The harmonic start is the first move of the optimization: no iteration, no move (the start is
+  // only evaluated, as after the untangling that untangle_first may have done).
+  if(options.harmonic_start && options.iterations > 0 && steps.harmonic_start())
     energy = std::min(energy, state.energy() * normalization);
+  result.harmonic_start_energy = energy;
 
   // The schedule (Algorithm 1).
   while(result.iterations < options.iterations) {

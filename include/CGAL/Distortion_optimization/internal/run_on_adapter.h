@@ -37,7 +37,7 @@ Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measu
   if(untangled.stopped_by_visitor && untangled.inverted_after > 0) {
     // Stopped while cells are still inverted: the measure may be infinite there, so the energies
     // are not numbers and the map is the untangler's last.
-    result.initial_energy = result.final_energy = std::numeric_limits<double>::quiet_NaN();
+    result.initial_energy = result.final_energy = result.harmonic_start_energy = std::numeric_limits<double>::quiet_NaN();
     result.inverted_cells = untangled.inverted_after;
     result.stopped_by_visitor = true;
   } else if(untangled.stopped_by_visitor) {
