@@ -260,8 +260,20 @@ TEST(Medit, RejectsMissingSections)
   EXPECT_REJECTED(header + "End\n", "bad.mesh:3: no Vertices section");
   EXPECT_REJECTED(header + four_vertices + "End\n", "bad.mesh:9: no Tetrahedra section");
   EXPECT_REJECTED(header + four_vertices + "Triangles 1 1 2 3 0\n", "bad.mesh:9: no Tetrahedra section");
-  EXPECT_REJECTED(header + "Tetrahedra 0\n" + four_vertices, "bad.mesh:3: Tetrahedra before Vertices");
   EXPECT_REJECTED(header + four_vertices + four_vertices, "bad.mesh:9: second Vertices section");
+}
+
+// Sections come in any order (libMeshb finds them by keyword): tetrahedra before their vertices
+// are read as after them (they were refused), their indices checked once the vertices are known.
+TEST(Medit, TetrahedraMayComeBeforeTheirVertices)
+{
+  const IO::Tetrahedron_soup first = read(header + "Tetrahedra 1 1 2 3 4 7\n" + four_vertices),
+                             after = read(header + four_vertices + "Tetrahedra 1 1 2 3 4 7\n");
+  EXPECT_EQ(first.points, after.points);
+  EXPECT_EQ(first.cells, after.cells);
+  EXPECT_EQ(first.labels, after.labels);
+  EXPECT_REJECTED(header + "Tetrahedra 1 1 2 3 9 0\n" + four_vertices, "tetrahedron 0 has vertex index 9 out of range (1 to 4)");
+  EXPECT_REJECTED(header + "Tetrahedra 1 1 2 2 3 0\n" + four_vertices, "bad.mesh:3: tetrahedron 0 repeats vertex 2");
 }
 
 TEST(Medit, RejectsTruncatedSections)

@@ -125,7 +125,9 @@ public:
         has_vertices = true;
       } else if(name == "Tetrahedra") {
         if(has_tetrahedra) tokens_.fail("second Tetrahedra section");
-        if(!has_vertices) tokens_.fail("Tetrahedra before Vertices");
+        // Sections come in any order (libMeshb finds them by keyword): before the vertices, the
+        // tetrahedra's indices are checked once those are known, as the triangles' are.
+        tetrahedra_first = !has_vertices;
         read_simplices("Tetrahedra", "tetrahedron", soup_.cells, soup_.labels);
         has_tetrahedra = true;
       } else if(name == "Triangles") {
@@ -138,6 +140,11 @@ public:
     }
     if(!has_vertices) tokens_.fail("no Vertices section");
     if(!has_tetrahedra) tokens_.fail("no Tetrahedra section");
+    for(std::size_t c = 0; tetrahedra_first && c < soup_.cells.size(); ++c)
+      for(std::size_t v : soup_.cells[c])
+        if(v >= soup_.points.size())
+          tokens_.fail("tetrahedron " + std::to_string(c) + " has vertex index " + std::to_string(v + 1) + " out of range (1 to " +
+                       std::to_string(soup_.points.size()) + ")");
     for(std::size_t f = 0; f < soup_.triangles.size(); ++f)
       for(std::size_t v : soup_.triangles[f])
         if(v >= soup_.points.size())
@@ -215,7 +222,7 @@ private:
     constexpr bool tetrahedra = k == 4;
     constexpr int values = static_cast<int>(k) + 1;
     const long long n = count(section, values);
-    const long long nv = tetrahedra ? static_cast<long long>(soup_.points.size()) : std::numeric_limits<long long>::max();
+    const long long nv = tetrahedra && !tetrahedra_first ? static_cast<long long>(soup_.points.size()) : std::numeric_limits<long long>::max();
     simplices.reserve(plausible(n, values));
     labels.reserve(plausible(n, values));
     const auto next = [&](long long c) {
@@ -230,7 +237,7 @@ private:
         const long long index = tokens_.integer(s);
         if(index < 1 || index > nv)
           tokens_.fail(std::string(entry) + " " + std::to_string(c) + " has vertex index " + std::string(s) + " out of range" +
-                       (tetrahedra ? " (1 to " + std::to_string(nv) + ")" : std::string()));
+                       (nv < std::numeric_limits<long long>::max() ? " (1 to " + std::to_string(nv) + ")" : std::string()));
         simplex[i] = static_cast<std::size_t>(index - 1);
         for(std::size_t j = 0; tetrahedra && j < i; ++j)
           if(simplex[j] == simplex[i]) tokens_.fail(std::string(entry) + " " + std::to_string(c) + " repeats vertex " + std::string(s));
@@ -261,6 +268,7 @@ private:
   }
 
   Token_reader tokens_;
+  bool tetrahedra_first = false;   // the Tetrahedra section came before the Vertices one
   Tetrahedron_soup soup_;
 };
 
