@@ -6,6 +6,7 @@
 #define DISTORTION_OPTIMIZER_COMMAND_LINE_H
 
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/IO/tetgen.h>
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 
@@ -261,10 +262,8 @@ void check_files(const Command_line& c)
   if(!c.energy_plot.empty()) outputs.emplace_back("--energy-plot", c.energy_plot);
   // A TetGen mesh is read from both files of its pair, whichever was named.
   for(const std::string option : {"--source", "--target"}) {
-    const std::string path = option == "--source" ? c.source : c.target, e = DO::IO::internal::extension(path);
-    if(e == "ele" || e == "node")
-      inputs.emplace_back(option + " (its ." + (e == "ele" ? "node" : "ele") + ")",
-                          path.substr(0, path.size() - e.size()) + (e == "ele" ? "node" : "ele"));
+    for(const std::string& file : DO::IO::internal::TetGen_files(option == "--source" ? c.source : c.target))
+      if(!file.empty()) inputs.emplace_back(option + " (its TetGen pair)", file);
   }
   const auto shown = [](const std::string& path) { return DO::IO::internal::printable(path); };
   for(const auto& [option, path] : inputs) {

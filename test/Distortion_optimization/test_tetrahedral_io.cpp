@@ -991,6 +991,21 @@ TEST(Obj, TextureCoordinatesRoundTripAndSeamsAreRefused)
                CGAL::Distortion_optimization::Invalid_input);
 }
 
+// What read_triangle_soup() says of `text` written to a file named `name` (the extension picks
+// the reader): its message without the path, or "no error".
+std::string soup_file_message(const std::string& name, const std::string& text)
+{
+  const std::string path = temp(name);
+  std::ofstream(path, std::ios::binary) << text;
+  try {
+    IO::read_triangle_soup(path);
+  } catch(const DO::Invalid_input& e) {
+    const std::string what = e.what();
+    return what.substr(0, path.size()) == path ? what.substr(path.size()) : what;
+  }
+  return std::string("no error");
+}
+
 // PLY, STL and GOCAD go through CGAL's readers, then through the checks of the package's own.
 TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
 {
@@ -1007,17 +1022,7 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
     for(std::size_t v : t) used[v] = true;
   EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
 
-  const auto message = [](const std::string& name, const std::string& text) {
-    const std::string path = temp(name);
-    std::ofstream(path, std::ios::binary) << text;
-    try {
-      IO::read_triangle_soup(path);
-    } catch(const DO::Invalid_input& e) {
-      const std::string what = e.what();
-      return what.substr(0, path.size()) == path ? what.substr(path.size()) : what;
-    }
-    return std::string("no error");
-  };
+  const auto message = soup_file_message;
   const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   const std::string points = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
@@ -1072,17 +1077,7 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
 // which it told on std::cerr only.
 TEST(Readers, FilesHoldExactlyWhatTheirHeadersAnnounce)
 {
-  const auto message = [](const std::string& name, const std::string& text) {
-    const std::string path = temp(name);
-    std::ofstream(path, std::ios::binary) << text;
-    try {
-      IO::read_triangle_soup(path);
-    } catch(const DO::Invalid_input& e) {
-      const std::string what = e.what();
-      return what.substr(0, path.size()) == path ? what.substr(path.size()) : what;
-    }
-    return std::string("no error");
-  };
+  const auto message = soup_file_message;
   const auto bytes = [](const auto& values) { return std::string(reinterpret_cast<const char*>(&values), sizeof values); };
   // Two triangles of a square, binary little-endian (x86's own order), with its faces announced.
   const auto binary_ply = [&](int announced, const std::string& index_type) {

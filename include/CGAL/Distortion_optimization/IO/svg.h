@@ -291,9 +291,9 @@ inline void write_energy_plot_SVG(const std::string& path, const std::vector<dou
     double last_tick = -1;
     for(int k = 0; k <= 4; ++k) {
       const double e = log_scale ? lo * std::exp(range * k / 4) : lo + range * k / 4, i = std::round(n * k / 4);
-      if(hi > lo || k == 0)
-        out << "<text x=\"" << left - 6 << "\" y=\"" << y(hi > lo ? e : lo) + 4 << "\" text-anchor=\"end\">" << internal::label(hi > lo ? e : lo) << "</text>\n";
-      if(i > last_tick && i <= energies.size() - 1. + 0.5)
+      if(hi > lo || k == 0)   // (at k = 0, e is lo)
+        out << "<text x=\"" << left - 6 << "\" y=\"" << y(e) + 4 << "\" text-anchor=\"end\">" << internal::label(e) << "</text>\n";
+      if(i > last_tick && i <= double(energies.size() - 1))
         out << "<text x=\"" << x(i) << "\" y=\"" << top + h + 18 << "\" text-anchor=\"middle\">" << internal::label(i) << "</text>\n";
       last_tick = i;
     }

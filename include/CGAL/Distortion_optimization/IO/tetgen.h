@@ -100,15 +100,28 @@ inline Tetrahedron_soup read_TetGen(std::istream& node, std::istream& ele, const
   return soup;
 }
 
+namespace internal {
+
+// The .node and .ele files of the TetGen mesh that `path` names (either one); empty if it names
+// neither. The reader below opens both, and a program must not write over either.
+inline std::array<std::string, 2> TetGen_files(const std::string& path)
+{
+  const std::string e = extension(path);
+  if(e != "ele" && e != "node") return {};
+  const std::string stem = path.substr(0, path.size() - e.size() - 1);
+  return {stem + ".node", stem + ".ele"};
+}
+
+} // namespace internal
+
 /// \ingroup PkgDistortionOptimizationIO
 /// Reads `stem.node` and `stem.ele` with `read_TetGen()`, given the path of either one (or of
 /// `stem.ele` only: the other is found beside it).
 /// \throws Invalid_input if a file cannot be opened, is malformed, or there is no tetrahedron.
 inline Tetrahedron_soup read_TetGen(const std::string& path)
 {
-  const std::string e = internal::extension(path);
-  if(e != "ele" && e != "node") throw Invalid_input(internal::printable(path) + ": a TetGen mesh is a .node/.ele pair");
-  const std::string stem = path.substr(0, path.size() - e.size() - 1), node_path = stem + ".node", ele_path = stem + ".ele";
+  const auto [node_path, ele_path] = internal::TetGen_files(path);
+  if(node_path.empty()) throw Invalid_input(internal::printable(path) + ": a TetGen mesh is a .node/.ele pair");
   std::ifstream node(node_path, std::ios::binary), ele(ele_path, std::ios::binary);
   if(!node) throw Invalid_input(internal::printable(node_path) + ": cannot open the file");
   if(!ele) throw Invalid_input(internal::printable(ele_path) + ": cannot open the file");
