@@ -1085,6 +1085,13 @@ TEST(CommandLine, VolumeModeMapsAClosedSurfaceOntoTheBallAndCarriesASurface)
   EXPECT_LT(json_value(json, "final_energy"), json_value(json, "initial_energy"));
   EXPECT_GE(json_value(json, "start_energy_carried"), 1.);
   EXPECT_GE(json_value(json, "final_energy_carried"), 1.);
+  // The table gives the added reals as its own: seconds to the millisecond, energies to 12 digits.
+  for(const auto& [name, format] : {std::pair<std::string, const char*>{"mesh_seconds", "%.3f"}, {"final_energy_carried", "%.12g"}}) {
+    char expected[64];
+    std::snprintf(expected, sizeof expected, format, json_value(json, name));
+    EXPECT_NE(result.output.find("\n" + name + std::string(21 - name.size() + 1, ' ') + expected + "\n"), std::string::npos)
+      << name << " " << expected << "\n" << result.output;
+  }
   const IO::Triangle_soup in = IO::read_triangle_soup(inner), out = IO::read_triangle_soup(carried);
   EXPECT_EQ(in.cells, out.cells);
   ASSERT_EQ(out.points.size(), 6u);

@@ -1070,6 +1070,38 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   EXPECT_EQ(message("x.vtp", "whatever"), ": unsupported extension (use .off, .obj, .ply, .stl or .ts)");
 }
 
+// What other writers produce and the formats allow: an OFF keyword in lower case, OBJ statements
+// continued over lines, an ASCII STL in capitals. Each is read as its plain form.
+TEST(Readers, LowerCaseOffContinuedObjLinesAndCapitalStl)
+{
+  for(const std::string text : {"off\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "COff 3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n"}) {
+    std::istringstream in(text), plain(triangle_off);
+    const IO::Triangle_soup soup = IO::read_OFF(in), expected = IO::read_OFF(plain);
+    EXPECT_EQ(soup.points, expected.points) << text;
+    EXPECT_EQ(soup.cells, expected.cells) << text;
+  }
+  EXPECT_READER_REJECTED("off", "offf 3 1 0\n", "bad.off:1: expected 3 counts (vertices, faces, edges), found 4");
+
+  std::istringstream continued("v 0 0 \\\n 0\nv 1 0 0\nv 0 1\\\n0 # a comment\nf 1 \\\n\\\n2 3\n"), plain(triangle_obj);
+  const IO::Triangle_soup soup = IO::read_OBJ(continued), expected = IO::read_OBJ(plain);
+  EXPECT_EQ(soup.points, expected.points);
+  EXPECT_EQ(soup.cells, expected.cells);
+  EXPECT_READER_REJECTED("obj", triangle_obj + "f 1 2 \\\n", "bad.obj:5: a line continued ('\\' at its end) by no other line");
+
+  const std::string facets = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  std::string capitals = "SOLID PART\n" + facets + "ENDSOLID PART\n";
+  for(char& c : capitals) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  EXPECT_EQ(soup_file_message("capitals.stl", capitals), "no error");
+  const std::string path = temp("capitals.stl");
+  std::ofstream(path, std::ios::binary) << capitals;
+  const IO::Triangle_soup stl = IO::read_triangle_soup(path);
+  std::remove(path.c_str());
+  EXPECT_EQ(stl.points, expected.points);
+  EXPECT_EQ(stl.cells.size(), 1u);
+  // Still strict: content after the first ENDSOLID.
+  EXPECT_EQ(soup_file_message("capitals2.stl", capitals + "SOLID B\n"), ":10: content after endsolid");
+}
+
 // What CGAL's readers take without a word, each of which dropped or misplaced triangles: a binary
 // PLY or STL longer than its header announces (the extra faces were dropped), text after an ASCII
 // STL's endsolid, GOCAD vertex ids out of order (CGAL numbers vertices as they come, so triangles

@@ -95,11 +95,11 @@ inline long long obj_index(long long index, std::size_t count)
 } // namespace internal
 
 /// \ingroup PkgDistortionOptimizationIO
-/// Reads an OFF file of triangles ("OFF" and the three counts "nv nf ne" on its line or the next,
-/// vertex lines "x y z [...]", face lines "3 i j k [...]", the optional values being numbers such
-/// as colors). The header may also be that of a variant with texture coordinates, colours or
-/// normals on the vertex lines (STOFF, COFF, NOFF, CNOFF, ...), whose values are skipped. A UTF-8
-/// byte order mark is skipped. `name` is used in error messages.
+/// Reads an OFF file of triangles ("OFF", or "off", and the three counts "nv nf ne" on its line
+/// or the next, vertex lines "x y z [...]", face lines "3 i j k [...]", the optional values being
+/// numbers such as colors). The header may also be that of a variant with texture coordinates,
+/// colours or normals on the vertex lines (STOFF, COFF, NOFF, CNOFF, ...), whose values are
+/// skipped. A UTF-8 byte order mark is skipped. `name` is used in error messages.
 /// \throws Invalid_input naming the line for a missing header or count, a count line without
 /// exactly three counts, a line longer than 1 MiB, a truncated file, a token that is not a number
 /// (a NUL byte or other garbage in it included), a non-finite coordinate, a face that is not a
@@ -110,7 +110,10 @@ inline Triangle_soup read_OFF(std::istream& in, const std::string& name = "OFF i
   std::vector<std::string> t;
   if(!reader.next(t)) reader.fail("empty file");
   std::size_t first = 0;   // where the counts start: "OFF nv nf ne", or "OFF" then "nv nf ne"
-  if(t[0].size() >= 3 && t[0].compare(t[0].size() - 3, 3, "OFF") == 0) {
+  // "OFF" in any case ("off" is written by some tools); the variants' prefixes are case sensitive.
+  std::string off = t[0].size() >= 3 ? t[0].substr(t[0].size() - 3) : std::string();
+  for(char& c : off) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if(off == "OFF") {
     // The variants whose vertex lines add values after x y z: texture (ST), colour (C), normal
     // (N), in that order (COFF, NOFF, STCNOFF, ...); the optional values are skipped anyway.
     // Homogeneous (4OFF) and n-dimensional (nOFF) coordinates would be misread.
@@ -164,7 +167,8 @@ inline Triangle_soup read_OFF(std::istream& in, const std::string& name = "OFF i
 /// Reads the vertices ("v x y z [...]", the optional values being numbers such as w or a color),
 /// texture coordinates ("vt u v [w]") and faces ("f a b c", with a/b/c possibly "i/t/n", 1-based or
 /// negative relative indices) of an OBJ file; the other statements of the format are skipped. A
-/// UTF-8 byte order mark is skipped.
+/// backslash ending a line continues its statement on the next line. A UTF-8 byte order mark is
+/// skipped.
 /// \throws Invalid_input naming the line, as `read_OFF()`, and for a line that is not an OBJ
 /// statement.
 inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ input")
@@ -173,7 +177,15 @@ inline Triangle_soup read_OBJ(std::istream& in, const std::string& name = "OBJ i
   std::vector<std::string> t;
   Triangle_soup soup;
   std::size_t normals = 0;   // checked in faces' references, not kept
+  std::vector<std::string> more;
   while(reader.next(t)) {
+    // A backslash at the end of a line continues the statement on the next one.
+    while(t.back().back() == '\\') {
+      t.back().pop_back();
+      if(t.back().empty()) t.pop_back();
+      if(!reader.next(more)) reader.fail("a line continued ('\\' at its end) by no other line");
+      t.insert(t.end(), more.begin(), more.end());
+    }
     if(t[0] == "vn") {
       ++normals;
     } else if(t[0] == "v") {
@@ -333,8 +345,9 @@ inline void check_binary_PLY_length(const std::string& bytes, const std::string&
 // endsolid, or after a GOCAD file's last END (all ignored by them); GOCAD vertex ids out of order
 // and ATOM vertices (misnumbered by them); PLY face indices they cannot read (said on std::cerr
 // only); and non-finite STL coordinates (CGAL merges equal corners through comparisons, and a NaN
-// compares equal to every point). A GOCAD file's carriage returns are dropped: its reader takes
-// "END\r" for an unknown keyword.
+// compares equal to every point). Two repairs of the bytes: a GOCAD file's carriage returns are
+// dropped (its reader takes "END\r" for an unknown keyword), and an ASCII STL written in capitals
+// is read in lower case.
 inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, const std::string& e)
 {
   const auto split = [](const std::string& text) {
@@ -431,6 +444,14 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
     // endsolid (CGAL's binary one, tried first, would take the announced facets of a longer file).
     const std::size_t start = bytes.find_first_not_of(" \t\r\n");
     const bool text = std::none_of(bytes.begin(), bytes.end(), [](char c) { return c == '\0'; });
+    // Keywords in capitals (SOLID, FACET NORMAL, ...; some exporters write them), which CGAL's
+    // reader does not know: the whole text in lower case (numbers and the ignored names included).
+    if(text && start != std::string::npos && bytes.size() >= start + 5) {
+      std::string keyword = bytes.substr(start, 5);
+      for(char& c : keyword) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if(keyword == "solid")
+        for(char& c : bytes) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
     if(!text || start == std::string::npos || bytes.compare(start, 5, "solid") != 0) {
       if(bytes.size() >= 84)
         throw Invalid_input(shown + ": neither ASCII STL nor binary STL: the header announces " + std::to_string(word(80)) +
