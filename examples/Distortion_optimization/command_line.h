@@ -282,6 +282,54 @@ void check_files(const Command_line& c)
   }
 }
 
+// Sets the option that takes `value`; false if there is no such option.
+bool set_option(Command_line& c, const std::string& option, const std::string& value)
+{
+  if(option == "--source") c.source = value;
+  else if(option == "--target") c.target = value;
+  else if(option == "--output") c.output = value;
+  else if(option == "--measure") c.measure = value;
+  else if(option == "--fix") { c.fix = value; c.fix_given = true; }
+  else if(option == "--start") c.start = value;
+  else if(option == "--mesh-output") c.mesh_output = value;
+  else if(option == "--boundary") c.boundary = value;
+  else if(option == "--reference") c.reference = value;
+  else if(option == "--subdivide") {
+    c.subdivide = parse_number<std::size_t>(option, value);
+    if(c.subdivide == 0) throw Usage_error("--subdivide expects 1 to 6 levels, not 0");
+  }
+  else if(option == "--scheme") c.scheme = value;
+  else if(option == "--subdivided-source") c.subdivided_source = value;
+  else if(option == "--flat-output") c.flat_output = value;
+  else if(option == "--svg") c.svg = value;
+  else if(option == "--vertex-weights") c.vertex_weights = value;
+  else if(option == "--cell-weighting") c.cell_weighting = value;
+  else if(option == "--order") c.order = value;
+  else if(option == "--parallel-sweep") c.parallel_sweep = value;
+  else if(option == "--global-step") c.global_step = value;
+  else if(option == "--harmonic-start") c.harmonic_start = value;
+  else if(option == "--energy-plot") c.energy_plot = value;
+  else if(option == "--carry") c.carry = value;
+  else if(option == "--carry-output") c.carry_output = value;
+  else if(option == "--center") c.center = parse_point(option, value);
+  else if(option == "--cell-size") {
+    c.cell_size = parse_number<double>(option, value);
+    if(!(c.cell_size > 0) || !std::isfinite(c.cell_size)) throw Usage_error("--cell-size must be a positive number");
+  }
+  else if(option == "--solver") c.solver = value;
+  else if(option == "--report") c.report = value;
+  else if(option == "--schedule") c.schedule = value;
+  else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
+  else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
+  else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
+  else if(option == "--time-limit") {
+    c.time_limit = parse_number<double>(option, value);
+    if(!(c.time_limit > 0) || !std::isfinite(c.time_limit)) throw Usage_error("--time-limit must be a positive number of seconds");
+  }
+  else return false;
+  return true;
+}
+
 Command_line parse(int argc, char** argv)
 {
   Command_line c;
@@ -296,52 +344,20 @@ Command_line parse(int argc, char** argv)
       flag = true;
       continue;
     }
-    if(i + 1 >= argc) throw Usage_error(option + " needs a value");
+    if(i + 1 >= argc) {
+      // A known option without its value, or an unknown one (a misspelt flag given last).
+      bool known = true;
+      try {
+        Command_line probe;
+        known = set_option(probe, option, "1");
+      } catch(const Usage_error&) {   // "1" is not a value of that option: it is one
+      }
+      throw Usage_error(known ? option + " needs a value" : "unknown option " + option);
+    }
     const std::string value = argv[++i];
     if(seen.count(option)) throw Usage_error(option + " is given twice");
     seen[option] = value;
-    if(option == "--source") c.source = value;
-    else if(option == "--target") c.target = value;
-    else if(option == "--output") c.output = value;
-    else if(option == "--measure") c.measure = value;
-    else if(option == "--fix") { c.fix = value; c.fix_given = true; }
-    else if(option == "--start") c.start = value;
-    else if(option == "--mesh-output") c.mesh_output = value;
-    else if(option == "--boundary") c.boundary = value;
-    else if(option == "--reference") c.reference = value;
-    else if(option == "--subdivide") {
-      c.subdivide = parse_number<std::size_t>(option, value);
-      if(c.subdivide == 0) throw Usage_error("--subdivide expects 1 to 6 levels, not 0");
-    }
-    else if(option == "--scheme") c.scheme = value;
-    else if(option == "--subdivided-source") c.subdivided_source = value;
-    else if(option == "--flat-output") c.flat_output = value;
-    else if(option == "--svg") c.svg = value;
-    else if(option == "--vertex-weights") c.vertex_weights = value;
-    else if(option == "--cell-weighting") c.cell_weighting = value;
-    else if(option == "--order") c.order = value;
-    else if(option == "--parallel-sweep") c.parallel_sweep = value;
-    else if(option == "--global-step") c.global_step = value;
-    else if(option == "--harmonic-start") c.harmonic_start = value;
-    else if(option == "--energy-plot") c.energy_plot = value;
-    else if(option == "--carry") c.carry = value;
-    else if(option == "--carry-output") c.carry_output = value;
-    else if(option == "--center") c.center = parse_point(option, value);
-    else if(option == "--cell-size") {
-      c.cell_size = parse_number<double>(option, value);
-      if(!(c.cell_size > 0) || !std::isfinite(c.cell_size)) throw Usage_error("--cell-size must be a positive number");
-    }
-    else if(option == "--solver") c.solver = value;
-    else if(option == "--report") c.report = value;
-    else if(option == "--schedule") c.schedule = value;
-    else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
-    else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
-    else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
-    else if(option == "--time-limit") {
-      c.time_limit = parse_number<double>(option, value);
-      if(!(c.time_limit > 0) || !std::isfinite(c.time_limit)) throw Usage_error("--time-limit must be a positive number of seconds");
-    }
-    else throw Usage_error("unknown option " + option);
+    if(!set_option(c, option, value)) throw Usage_error("unknown option " + option);
   }
   if(c.source.empty()) throw Usage_error("--source is required");
   if(c.output.empty()) throw Usage_error("--output is required");

@@ -44,6 +44,7 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -109,8 +110,14 @@ Mesh to_mesh(const DO::IO::Triangle_soup& soup, const std::string& name)
   return mesh;
 }
 
+// One piece (a disk beside a closed torus has one border and Euler characteristic 1 too), one
+// border, Euler characteristic 1.
 bool is_disk(const Mesh& mesh)
 {
+  std::vector<std::size_t> component(mesh.number_of_faces());
+  if(CGAL::Polygon_mesh_processing::connected_components(
+       mesh, boost::make_iterator_property_map(component.begin(), get(CGAL::face_index, mesh))) != 1)
+    return false;
   std::vector<Mesh::Halfedge_index> cycles;
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
   const long long euler = static_cast<long long>(mesh.number_of_vertices()) - static_cast<long long>(mesh.number_of_edges()) +
@@ -352,7 +359,7 @@ int run_triangles(const Command_line& c)
     }
   } else {
     if(!is_disk(mesh))
-      throw DO::Invalid_input(c.source + ": without --target the source must be a topological disk (one border, no handle)");
+      throw DO::Invalid_input(c.source + ": without --target the source must be a topological disk (one piece, one border, no handle)");
     DO::initial_parameterization(mesh, uv);
     // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
     // planar source listed clockwise gets its mirror image. (A surface is compared in each face's
@@ -548,7 +555,8 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     // and ten times the facet distance).
     std::string what = e.what();
     for(const auto& [library, tool] : {std::pair<std::string, std::string>("; give larger sizes", "; give a larger --cell-size"),
-                                       {"; give sizes below its thickness", "; give a --cell-size below 10 times its thickness"}})
+                                       {"; give sizes below its thickness", "; give a --cell-size below 10 times its thickness"},
+                                       {"; try a larger sharp_edge_angle", "; give a smaller --cell-size"}})
       if(const auto remedy = what.find(library); remedy != std::string::npos) what = what.substr(0, remedy) + tool;
     throw DO::Invalid_input(c.source + ": " + what);
   }
@@ -645,17 +653,9 @@ int run_tetrahedra(const Command_line& c)
   if(c.volume_mode()) {
     // The start is the tool's own, of about unit size (the radial map's, the square of a unit
     // source's): a source too far from unit size for the measures is refused as such, before
-    // the radial map squares its size out of double precision. Half extents: the whole may
-    // overflow.
-    std::array<double, 3> low = source.points[0], high = low;
-    for(const auto& p : source.points)
-      for(int k = 0; k < 3; ++k) {
-        low[k] = std::min(low[k], p[k]);
-        high[k] = std::max(high[k], p[k]);
-      }
-    double half_extent = 0;
-    for(int k = 0; k < 3; ++k) half_extent = std::max(half_extent, high[k] / 2 - low[k] / 2);
-    const int size = std::ilogb(half_extent) + 1;
+    // the radial map squares its size out of double precision. The size of the tetrahedra's
+    // vertices (a point in none keeps its target): 2^size, the inverse of their scale.
+    const int size = -std::ilogb(DO::internal::complex_scale(c3t3));
     if(std::abs(size - 1) > DO::largest_size_ratio_exponent<3>)
       throw DO::Invalid_input("the source's size (about 2^" + std::to_string(size) + ") and the unit size of the start (--start " +
                               c.start + ") differ by more than 2^" + std::to_string(DO::largest_size_ratio_exponent<3>) +
@@ -828,6 +828,9 @@ int run(const Command_line& c)
     for(std::size_t i = 0; i < outputs.size(); ++i)
       for(std::size_t at; files[i] && (at = message.find(files[i]->path())) != std::string::npos;)
         message.replace(at, files[i]->path().size(), c.*outputs[i]);
+    // The library's word on a source cell: the source file's cell, when the file lists them.
+    if((message.rfind("source face ", 0) == 0 || message.rfind("source cell ", 0) == 0) && !c.volume_mode())
+      message = DO::IO::internal::printable(c.source) + ": " + message;
     throw DO::Invalid_input(message);
   }
   // Devices and pipes first: writing into them may fail (/dev/full), renaming a file hardly can.

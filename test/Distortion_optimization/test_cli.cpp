@@ -738,7 +738,26 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   // A source triangle of zero area (three collinear points).
   std::ofstream(temp("collinear.off")) << "OFF\n3 1 0\n0 0 0\n1 1 0\n2 2 0\n3 0 1 2\n";
   expect_failure("--source " + temp("collinear.off") + " --target " + temp("collinear.off") + " --output " + o, 1,
-                 "source face 0 is degenerate");
+                 temp("collinear.off") + ": source face 0 is degenerate");
+  // A needle whose vertices are not exactly collinear, but whose edges' rounded cross product is
+  // zero (the midpoint of an edge written with few decimals): degenerate in doubles, as such.
+  std::ofstream(temp("needle.off")) << "OFF\n4 2 0\n0.154 -0.207 0.953\n-0.907 0.717 -0.421\n-0.3765 0.255 0.266\n"
+                                       "1 1 1\n3 0 1 2\n3 0 3 1\n";
+  expect_failure("--source " + temp("needle.off") + " --output " + o, 1,
+                 temp("needle.off") + ": source face 0 is degenerate in double precision");
+  // A disk beside a closed surface: one border and Euler characteristic 1, yet not a disk.
+  const std::string disk_and_closed = temp("disk_and_closed.off");
+  std::ofstream(disk_and_closed) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
+                                    "3 0 1 2\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n";
+  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1, "must be a topological disk (one piece");
+  // Its closed piece mapped into the plane: no untangling can help, and the messages say why.
+  const std::string flat = temp("disk_and_closed_flat.off");
+  std::ofstream(flat) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5.3 0.3 0\n"
+                         "3 0 1 2\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n";
+  expect_failure("--source " + disk_and_closed + " --target " + flat + " --output " + o, 1,
+                 "the piece of the mesh with cell 1 has no border (a closed surface)");
+  expect_failure("--source " + disk_and_closed + " --target " + flat + " --output " + o + " --untangle", 1,
+                 "untangling cannot succeed: the piece of the mesh with cell 1 has no border");
 
   const std::string truncated = temp("truncated.off");
   std::ofstream(truncated) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";
@@ -785,6 +804,12 @@ TEST(CommandLine, ErrorsAreOneLine)
     EXPECT_EQ(result.status, 2) << arguments;
     EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
     EXPECT_NE(result.output.find("run with --help for the usage"), std::string::npos) << result.output;
+  }
+  // A misspelt flag is unknown wherever it comes; a known option given last lacks its value.
+  for(const std::string last : {"", " --source a.off"}) {
+    EXPECT_NE(run("--output b.off --untangel" + last).output.find("unknown option --untangel"), std::string::npos) << last;
+    EXPECT_NE(run("--output b.off --center" + last).output.find(last.empty() ? "--center needs a value" : "--center expects"),
+              std::string::npos) << last;
   }
   // Output names are quoted as input names are, control bytes escaped: one line still.
   const std::string s = temp("s_lines.off"), t = temp("t_lines.off");
@@ -1097,6 +1122,16 @@ TEST(CommandLine, VolumeModeMapsAClosedSurfaceOntoTheBallAndCarriesASurface)
   ASSERT_EQ(out.points.size(), 6u);
   for(const auto& q : out.points) EXPECT_LT(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]), 1.);
 
+  // A point in no tetrahedron, far away, is no part of the volume's size: it keeps its position.
+  IO::Tetrahedron_soup with_unused = source;
+  with_unused.points.push_back({1e40, 0, 0});
+  if(!with_unused.point_labels.empty()) with_unused.point_labels.push_back(0);
+  const std::string unused = temp("unused.mesh"), o3 = temp("unused_out.mesh");
+  IO::write_MEDIT_soup(unused, with_unused);
+  const Tool_run far = run("--source " + unused + " --start ball --output " + o3 + " --iterations 2");
+  ASSERT_EQ(far.status, 0) << far.output;
+  EXPECT_EQ(IO::read_tetrahedron_soup(o3).points.back(), with_unused.points.back());
+
   // The written source again, radial start about the origin with a fixed boundary: the boundary
   // keeps the radial map's image, x |x|.
   const std::string o2 = temp("radial.mesh");
@@ -1142,6 +1177,10 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure("--source " + crossing + " --start ball" + base, 1, "cross");
   expect_failure("--source " + cube + " --start ball --center 5,0,0" + base, 1, "--center is not inside the volume");
   expect_failure("--source " + cube + " --start radial --center 5,0,0" + base, 1, "--center is not inside the volume");
+  // Nor on its boundary: a corner (a vertex of the mesh), a point of an edge, of a face.
+  for(const std::string centre : {"-1,-1,-1", "1,1,0", "1,0.25,0.5"})
+    for(const std::string start : {"ball", "radial"})
+      expect_failure("--source " + cube + " --start " + start + " --center " + centre + base, 1, "--center is not inside the volume");
   // Two cubes apart: their centroid, the default centre, is in neither.
   const std::string apart = temp("apart.off");
   IO::Triangle_soup pair = IO::read_triangle_soup(cube);

@@ -306,6 +306,90 @@ TEST(MinimizeDistortion, InvertedStartIsRejectedForANormalizedMeasure)
   EXPECT_LE(count_flipped(m.mesh, m.uv), flipped);
 }
 
+// Sources the exact predicates accept but no run can: a disk beside a closed surface (one border,
+// Euler characteristic 1: a disk by its counts), whose closed piece no map into the plane keeps
+// oriented; a needle whose rounded edges are collinear. Each refused with its reason.
+TEST(MinimizeDistortion, ADiskBesideAClosedSurfaceAndANeedleAreRefusedAsSuch)
+{
+  Mesh3 mesh;
+  std::vector<Mesh3::Vertex_index> v;
+  for(const Point_3& p : {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(5, 0, 0), Point_3(6, 0, 0),
+                          Point_3(5, 1, 0), Point_3(5, 0, 1)})
+    v.push_back(mesh.add_vertex(p));
+  mesh.add_face(v[0], v[1], v[2]);
+  for(const std::array<int, 3>& f : {std::array<int, 3>{3, 5, 4}, {3, 4, 6}, {4, 5, 6}, {5, 3, 6}})
+    ASSERT_NE(mesh.add_face(v[f[0]], v[f[1]], v[f[2]]), Mesh3::null_face());
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  const auto message = [](const auto& run) {
+    try {
+      run();
+    } catch(const DO::Invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([&] { DO::initial_parameterization(mesh, uv); }).find("the mesh has 2 connected components"), std::string::npos);
+
+  // Its closed piece flattened (vertex 6 inside the image of the others): some of its triangles
+  // are inverted, and must be.
+  const std::array<Point_2, 7> flat = {Point_2(0, 0), Point_2(1, 0), Point_2(0, 1), Point_2(5, 0), Point_2(6, 0),
+                                       Point_2(5, 1), Point_2(5.3, 0.3)};
+  for(int i = 0; i < 7; ++i) uv[v[i]] = flat[i];
+  ASSERT_GT(count_flipped(mesh, uv), 0u);
+  const std::string closed = "the piece of the mesh with cell 1 has no border (a closed surface)";
+  EXPECT_NE(message([&] { CGAL::minimize_distortion(mesh, uv, DO::Conformal_dilatation()); }).find(closed), std::string::npos);
+  auto none = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
+  for(const bool fixed : {true, false}) {
+    const std::string what = message([&] {
+      if(fixed) CGAL::minimize_distortion(mesh, uv, DO::Conformal_dilatation(), DO::parameters::untangle_first(true));
+      else CGAL::minimize_distortion(mesh, uv, DO::Conformal_dilatation(),
+                                     DO::parameters::untangle_first(true, CGAL::parameters::vertex_is_constrained_map(none)));
+    });
+    EXPECT_EQ(what.find("untangling cannot succeed: " + closed), 0u) << what;
+  }
+  for(int i = 0; i < 7; ++i) EXPECT_EQ(uv[v[i]], flat[i]);   // nothing written
+  // Measured, it is only what it is: ARAP is finite on inverted cells.
+  EXPECT_GT(CGAL::compute_distortion(mesh, uv, DO::ARAP()).inverted_cells, 0u);
+
+  // A torus with a triangle removed (genus 1, one border) flattened by projection, its border free
+  // and kept from crossing: no injective map exists, and untangling says so at once.
+  Mesh3 torus;
+  std::vector<Mesh3::Vertex_index> w;
+  for(int i = 0; i < 4; ++i)
+    for(int j = 0; j < 4; ++j) {
+      const double phi = 2 * M_PI * i / 4 + 0.2, theta = 2 * M_PI * j / 4 + 0.3;
+      w.push_back(torus.add_vertex(Point_3((3 + std::cos(theta)) * std::cos(phi), (3 + std::cos(theta)) * std::sin(phi), std::sin(theta))));
+    }
+  const auto at = [&](int i, int j) { return w[4 * (i % 4) + j % 4]; };
+  for(int i = 0; i < 4; ++i)
+    for(int j = 0; j < 4; ++j) {
+      if(i + j > 0) ASSERT_NE(torus.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1)), Mesh3::null_face());
+      ASSERT_NE(torus.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1)), Mesh3::null_face());
+    }
+  auto torus_uv = torus.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  for(auto u : torus.vertices()) torus_uv[u] = Point_2(torus.point(u).x(), torus.point(u).y());
+  auto all_free = torus.add_property_map<Mesh3::Vertex_index, bool>("v:none", false).first;
+  const std::string handles = message([&] {
+    CGAL::minimize_distortion(torus, torus_uv, DO::Conformal_dilatation(), DO::parameters::untangle_first(true,
+      DO::parameters::preserve_global_injectivity(true, CGAL::parameters::vertex_is_constrained_map(all_free))));
+  });
+  EXPECT_EQ(handles.find("untangling with global injectivity cannot succeed: the piece of the mesh with cell 0 has 1 handle "
+                         "(genus 1)"), 0u) << handles;
+
+  // The needle: exactly, its vertices are not collinear (the cross product of the decimals' doubles
+  // is about 5e-17); in doubles, its edges' cross product is zero.
+  Mesh3 needle;
+  const auto a = needle.add_vertex(Point_3(0.154, -0.207, 0.953)), b = needle.add_vertex(Point_3(-0.907, 0.717, -0.421)),
+             c = needle.add_vertex(Point_3(-0.3765, 0.255, 0.266));
+  needle.add_face(a, b, c);
+  ASSERT_FALSE(CGAL::collinear(needle.point(a), needle.point(b), needle.point(c)));
+  auto needle_uv = needle.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  needle_uv[a] = Point_2(0, 0), needle_uv[b] = Point_2(1, 0), needle_uv[c] = Point_2(0, 1);
+  EXPECT_EQ(message([&] { CGAL::minimize_distortion(needle, needle_uv, DO::ARAP()); }),
+            "source face 0 is degenerate in double precision (its vertices are not exactly collinear, but so nearly "
+            "that its rounded edges are)");
+}
+
 // The Dirichlet energy (and a sum or product with it) decreases as the map shrinks: with fewer than
 // three vertices constrained its minimum is the map collapsed onto them, which is refused before
 // anything runs; three hold the size.

@@ -878,6 +878,22 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
   // About a point outside the sphere the radial map is refused, its target untouched.
   EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), Point_3(2, 0, 0)), DO::Center_outside_domain);
   EXPECT_TRUE(radial_start.empty());
+  // Nor on its boundary: at a boundary vertex (in cells whose facets through it may all be inner
+  // ones), or at the midpoint of a boundary edge (where the rounded midpoint is on it).
+  std::size_t tried = 0;
+  for(auto c = sphere.cells_in_complex_begin(); c != sphere.cells_in_complex_end() && tried < 20; ++c)
+    for(int i = 0; i < 4 && tried < 20; ++i)
+      if(!sphere.is_in_complex(c->neighbor(i))) {
+        const Point_3 a = c->vertex((i + 1) % 4)->point().point(), b = c->vertex((i + 2) % 4)->point().point();
+        EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), a), DO::Center_outside_domain) << a;
+        const Point_3 mid((a.x() + b.x()) / 2, (a.y() + b.y()) / 2, (a.z() + b.z()) / 2);
+        if(CGAL::collinear(a, b, mid)) {
+          EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), mid), DO::Center_outside_domain) << mid;
+        }
+        ++tried;
+      }
+  EXPECT_EQ(tried, 20u);
+  EXPECT_TRUE(radial_start.empty());
   DO::radial_map(sphere, Target_map(radial_start), Point_3(0, 0, 0));
   for(const auto& [v, q] : radial_start)
     EXPECT_EQ(q, radial(v->point().point()));

@@ -419,6 +419,34 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);
 }
 
+// Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes
+// ask for, once stopped Mesh_3 at 13 vertices); a surface far from the origin for its size is
+// meshed too (its copy moved near the origin: a unit sphere at 10^12 hung Mesh_3), its complex
+// moved back with every cell positive, around the surface.
+TEST(VolumeWorkflow, LargeSizesAndSurfacesFarFromTheOriginAreMeshed)
+{
+  const Surface good = icosahedron(1);
+  for(const double h : {2., 5.}) {
+    const C3t3 coarse = DO::mesh_interior(good, DOP::cell_size(h));
+    EXPECT_GT(coarse.number_of_cells_in_complex(), 0u) << h;
+    EXPECT_EQ(non_positive_cells(coarse), 0u) << h;
+  }
+  for(const double offset : {1e12, -1e13}) {
+    Surface far = icosahedron(1);
+    for(auto v : far.vertices()) far.point(v) = Point(far.point(v).x() + offset, far.point(v).y(), far.point(v).z() - offset / 2);
+    const C3t3 c3t3 = DO::mesh_interior(far, DOP::cell_size(0.4));
+    EXPECT_GT(c3t3.number_of_cells_in_complex(), 20u) << offset;
+    EXPECT_EQ(non_positive_cells(c3t3), 0u) << offset;
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(far);
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        for(int k = 0; k < 3; ++k) {
+          EXPECT_GE(position(c3t3, c, i)[k], box.min_coord(k) - 0.1) << offset;
+          EXPECT_LE(position(c3t3, c, i)[k], box.max_coord(k) + 0.1) << offset;
+        }
+  }
+}
+
 TEST(VolumeWorkflow, RealSelfIntersectingSurfaceIsRejected)
 {
   DEMO_SURFACE(elk, "elk.off");   // closed and 2-manifold, but some faces cross

@@ -14,6 +14,7 @@
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
@@ -55,6 +56,12 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
   namespace SMP = CGAL::Surface_mesh_parameterization;
   if(num_faces(tm) == 0)
     throw Invalid_input("the mesh has no face");
+  // CGAL's parameterizers map the piece of the border only: the others would stay where uv had them.
+  const std::size_t pieces =
+    CGAL::Polygon_mesh_processing::connected_components(tm, get(CGAL::dynamic_face_property_t<std::size_t>(), tm));
+  if(pieces != 1)
+    throw Invalid_input("the mesh has " + std::to_string(pieces) + " connected components: a disk (one piece, genus 0, "
+                        "one border) is needed to parameterize it");
   const auto border = CGAL::Polygon_mesh_processing::longest_border(tm).first;
   if(border == boost::graph_traits<TriangleMesh>::null_halfedge())
     throw Invalid_input("the mesh has no border: a disk (genus 0, one border) is needed to parameterize it");
@@ -76,8 +83,8 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
 /// triangles of a Tutte map are then all positively oriented, a valid start for
 /// `CGAL::minimize_distortion()`. Coordinates of any magnitude
 /// are accepted: a mesh far from unit size is parameterized scaled by a power of two.
-/// \throws Invalid_input if `tm` is empty, has no border, or CGAL's parameterizer fails (e.g. the
-/// mesh is not a topological disk).
+/// \throws Invalid_input if `tm` is empty, has several connected components or no border, or CGAL's
+/// parameterizer fails (e.g. the mesh is not a topological disk).
 template <class TriangleMesh, class UVMap>
 void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind = Initial_map::TUTTE,
                               Border_shape border = Border_shape::CIRCLE)

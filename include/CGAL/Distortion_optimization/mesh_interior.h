@@ -16,7 +16,9 @@
 //      only on the input and the parameters.
 // Mesh_3 runs on a copy scaled by a power of two to unit size, and its complex is scaled back:
 // Mesh_3 has absolute tolerances (it crashed on a surface 2^-60 in size and hung at 2^-40), and
-// an exact scaling makes the mesh of a scaled surface the scaled mesh.
+// an exact scaling makes the mesh of a scaled surface the scaled mesh. A surface far from the
+// origin for its size is moved near it first, exactly (its coordinates keep too few digits below
+// its distance: a sphere of radius 0.5 at 10^12 hung Mesh_3), and the complex moved back.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MESH_INTERIOR_H
 #define CGAL_DISTORTION_OPTIMIZATION_MESH_INTERIOR_H
@@ -182,7 +184,8 @@ struct Interior_mesh_defaults
   static constexpr double sharp_edge_angle = 60;
 };
 
-// A checked copy of the input surface for the domain, oriented to bound its volume and scaled by
+// A checked copy of the input surface for the domain, oriented to bound its volume, moved by
+// -offset (exactly, where the surface is far from the origin for its size; else 0) and scaled by
 // `scale`, the power of two that brings its largest extent into [1, 2). The copy is
 // rebuilt from a canonical soup (points and triangles in the input's order, each triangle starting
 // at its smallest vertex), so that it, and the mesh, depend only on the geometry and that order:
@@ -194,8 +197,9 @@ struct Checked_surface
   using Point_3 = typename GeomTraits::Point_3;
   using Triangle = std::array<std::size_t, 3>;
 
-  Surface surface;   // scaled by `scale`
+  Surface surface;   // the input moved by -offset, then scaled by `scale`
   double scale = 1;
+  std::array<double, 3> offset = {0, 0, 0};
   double volume = 0; // of the input, unscaled
   double area = 0;   // of the input, unscaled
 
@@ -270,9 +274,18 @@ struct Checked_surface
     double half_extent = 0;
     for(int k = 0; k < 3; ++k) half_extent = (std::max)(half_extent, box.max_coord(k) / 2 - box.min_coord(k) / 2);
     scale = unit_scale(half_extent) / 2;
+    // Along an axis where the box lies within [m, 2 m] for its lower bound m > 0 (or [2 m, m] for
+    // its upper bound m < 0), p - m is exact (Sterbenz): the copy starts there. Elsewhere the box
+    // is at most its extent from the origin, near enough.
+    for(int k = 0; k < 3; ++k) {
+      const double low = box.min_coord(k), high = box.max_coord(k);
+      if(low > 0 && high <= 2 * low) offset[k] = low;
+      if(high < 0 && low >= 2 * high) offset[k] = high;
+    }
     std::vector<Point_3> scaled;
     for(const Point_3& p : points)
-      scaled.emplace_back(scale * CGAL::to_double(p.x()), scale * CGAL::to_double(p.y()), scale * CGAL::to_double(p.z()));
+      scaled.emplace_back(scale * (CGAL::to_double(p.x()) - offset[0]), scale * (CGAL::to_double(p.y()) - offset[1]),
+                          scale * (CGAL::to_double(p.z()) - offset[2]));
     // Mesh_3 tells inside from outside by ray parity, so orientation does not change the volume
     // it meshes; orienting makes the volume below positive and the copy independent of the input's
     // orientation (orient a first build, then read its triangles back).
@@ -370,30 +383,39 @@ Interior_mesh_sizes read_interior_mesh_sizes(double volume, double area, double 
   return s;
 }
 
-// Scales the complex that Mesh_3 made by the power of two `factor`, exactly: the points and their
-// weights (squared lengths), the facets' surface centres and the sizes Mesh_3's optimizers keep in
-// the vertices; the cells' cached circumcentres are dropped, to be computed again when asked for.
+// Maps the complex that Mesh_3 made by x -> factor x + offset (factor a power of two): the points
+// and their weights (squared lengths), the facets' surface centres and the sizes Mesh_3's
+// optimizers keep in the vertices; the cells' cached circumcentres are dropped, to be computed
+// again when asked for. Exact without offset. With one, the points are rounded to the input's
+// coordinates: throws if a cell of the complex is then no longer positively oriented.
 template <class C3T3>
-void scale_complex(C3T3& c3t3, double factor)
+void map_complex_back(C3T3& c3t3, double factor, const std::array<double, 3>& offset)
 {
   using Tr = typename C3T3::Triangulation;
   using Bare_point = typename Tr::Bare_point;
   using Weighted_point = typename Tr::Weighted_point;
-  if(factor == 1) return;
+  const bool moved = offset != std::array<double, 3>{0, 0, 0};
+  if(factor == 1 && !moved) return;
   Tr& tr = c3t3.triangulation();
-  const auto scaled = [factor](const Bare_point& p) {
-    return Bare_point(factor * CGAL::to_double(p.x()), factor * CGAL::to_double(p.y()), factor * CGAL::to_double(p.z()));
+  const auto mapped = [&](const Bare_point& p) {
+    return Bare_point(factor * CGAL::to_double(p.x()) + offset[0], factor * CGAL::to_double(p.y()) + offset[1],
+                      factor * CGAL::to_double(p.z()) + offset[2]);
   };
   const auto point = tr.geom_traits().construct_point_3_object();
   for(auto v : tr.finite_vertex_handles()) {
     const Weighted_point& p = v->point();
-    v->set_point(Weighted_point(scaled(point(p)), factor * factor * CGAL::to_double(p.weight())));
+    v->set_point(Weighted_point(mapped(point(p)), factor * factor * CGAL::to_double(p.weight())));
     v->set_meshing_info(factor * v->meshing_info());
   }
   for(auto c : tr.all_cell_handles()) {
     c->invalidate_weighted_circumcenter_cache();
-    for(int i = 0; i < 4; ++i) c->set_facet_surface_center(i, scaled(c->get_facet_surface_center(i)));
+    for(int i = 0; i < 4; ++i) c->set_facet_surface_center(i, mapped(c->get_facet_surface_center(i)));
   }
+  if(!moved) return;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(CGAL::orientation(point(tr.point(c, 0)), point(tr.point(c, 1)), point(tr.point(c, 2)), point(tr.point(c, 3))) != CGAL::POSITIVE)
+      throw Invalid_input("mesh_interior: the surface is too far from the origin for its size: its tetrahedra, rounded "
+                          "to its coordinates' precision, are no longer all positively oriented; move it nearer to the origin");
 }
 
 template <class NamedParameters>
@@ -545,7 +567,8 @@ with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its s
 (mpi_triang.off) stops at `maximum_number_of_vertices`. Sizes are in the units of the input, and
 Mesh_3 runs on a copy scaled by a power of two to unit size: a surface of any size whose volume a
 `double` holds is meshed alike, and a surface scaled by a power of two gives exactly the scaled complex
-(points and weights). A size that is given also sets the defaults of the sizes
+(points and weights). A surface far from the origin for its size (within \f$ [m, 2m] \f$ along an
+axis) is moved near it for Mesh_3 (exactly), and the complex moved back (rounded). A size that is given also sets the defaults of the sizes
 derived from it: `cell_size(h)` alone makes facet_size = edge_size = h and facet_distance =
 h / 10.
 
@@ -685,7 +708,7 @@ h / 10.
                           (`Distortion_optimization::parameters::maximum_number_of_vertices()`)}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{10 times the number of vertices the sizes ask for,
-                      `V / (0.2 cell_size^3) / 5.5 + A / (0.3 facet_size^2) / 2` (at most 10^15)}
+                      `V / (0.2 cell_size^3) / 5.5 + A / (0.3 facet_size^2) / 2` (at least 10^4, at most 10^15)}
     \cgalParamExtra{Mesh_3 checks it while refining, not while protecting the sharp edges. Sizes that ask for more
                     vertices than this maximum (when it is given and not 0), or than 10^7 (when it is not
                     given), are refused before Mesh_3 starts.}
@@ -699,7 +722,9 @@ degenerate face or two faces that cross, encloses no volume, is thinner than the
 (its mean thickness, 2 volume / area, is smaller), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
-`maximum_number_of_vertices`, or if the complex has no cell.
+`maximum_number_of_vertices`, if the complex has no cell, or if the surface is so far from the
+origin for its size that a cell of the complex, its points rounded to the input's precision, is not
+positively oriented.
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 typename Interior_mesh<internal::Interior_mesh_traits_of<NamedParameters>>::C3T3
@@ -742,7 +767,9 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                        checked.area / (D::area_per_facet * sizes.facet_size * sizes.facet_size) / 2;
   const auto given_maximum = get_parameter(np, internal_np::maximum_number_of_vertices);
   constexpr bool maximum_given = !std::is_same<std::decay_t<decltype(given_maximum)>, CGAL::internal_np::Param_not_found>::value;
-  const std::size_t maximum_vertices = choose_parameter(given_maximum, static_cast<std::size_t>((std::min)(10 * asked, 1e15)));
+  // (At least 10^4: Mesh_3 needs some vertices to follow any surface, however large the sizes.)
+  const std::size_t maximum_vertices =
+    choose_parameter(given_maximum, static_cast<std::size_t>((std::min)((std::max)(10 * asked, 1e4), 1e15)));
   // Sizes that ask for more vertices than memory holds are refused before Mesh_3 starts rather than
   // after it has filled the memory: beyond the maximum when one is given, else beyond 10^7.
   const double affordable = maximum_given && maximum_vertices > 0 ? double(maximum_vertices) : maximum_given ? 1e300 : 1e7;
@@ -774,12 +801,12 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   if(error == CGAL::CGAL_MESH_3_MAXIMAL_NUMBER_OF_VERTICES_REACHED)
     throw Invalid_input("mesh_interior: Mesh_3 stopped at " + std::to_string(maximum_vertices) +
                         " vertices (maximum_number_of_vertices): the surface has details far smaller than the "
-                        "sizes (short sharp edges?); try a larger sharp_edge_angle (180 protects no edge) or "
-                        "a larger maximum");
+                        "sizes (thin parts, short sharp edges?); try a larger sharp_edge_angle (180 protects no "
+                        "edge) or a larger maximum");
   if(c3t3.number_of_cells_in_complex() == 0)
     throw Invalid_input("mesh_interior: Mesh_3 produced no tetrahedron inside the surface (sizes too large "
                         "for the volume?)");
-  internal::scale_complex(c3t3, 1 / s);
+  internal::map_complex_back(c3t3, 1 / s, checked.offset);
   return c3t3;
 }
 

@@ -153,7 +153,9 @@ a measure from the untangled map.
 of threads, and when inverted cells remain after the rounds when Tutte's embedding does not apply
 (the constraints may admit no injective map: e.g. a fixed boundary that crosses itself, or the
 descent found none: e.g. one in a boundary fixed on a polygon that is not convex); the message
-gives the number of cells still inverted.
+gives the number of cells still inverted. Before any round for a triangle mesh with a piece without
+border (no map of a closed surface into the plane keeps its triangles' orientation) or, with
+`preserve_global_injectivity`, a piece with handles and free border vertices.
 \throws Distortion_optimization::Unmovable_inverted_cell (an `Invalid_input`) for an inverted
 cell whose vertices are all constrained, before any round.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with

@@ -78,24 +78,31 @@ Point_3 scaled(const Point_3& p, double s)
   return Point_3(s * CGAL::to_double(p.x()), s * CGAL::to_double(p.y()), s * CGAL::to_double(p.z()));
 }
 
-// Whether p is in a cell of the complex and on no facet of its boundary (exact predicates).
+// Whether p is in a cell of the complex (its facets included) and on no facet of the complex's
+// boundary (exact predicates). Both are needed: a corner of the domain is in a cell whose facets
+// through it are all inner ones.
 template <class C3T3, class Point_3>
 bool is_strictly_inside(const C3T3& c3t3, const Point_3& p)
 {
   const auto& tr = c3t3.triangulation();
   auto point = tr.geom_traits().construct_point_3_object();
+  bool in_a_cell = false;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     bool inside = true;
-    for(int i = 0; i < 4 && inside; ++i) {
+    for(int i = 0; i < 4; ++i) {
       // p replaces vertex i: the facet opposite i sees p on the cell's side, or p is on it.
       std::array<Point_3, 4> q;
       for(int j = 0; j < 4; ++j) q[j] = j == i ? p : Point_3(point(tr.point(c, j)));
       const CGAL::Orientation o = CGAL::orientation(q[0], q[1], q[2], q[3]);
-      inside = o == CGAL::POSITIVE || (o == CGAL::ZERO && c3t3.is_in_complex(c->neighbor(i)));
+      inside = inside && o != CGAL::NEGATIVE;
+      if(o == CGAL::ZERO && !c3t3.is_in_complex(c->neighbor(i))) {   // p on the plane of a boundary facet
+        const auto a = point(tr.point(c, (i + 1) % 4)), b = point(tr.point(c, (i + 2) % 4)), d = point(tr.point(c, (i + 3) % 4));
+        if(typename CGAL::Kernel_traits<Point_3>::Kernel::Triangle_3(Point_3(a), Point_3(b), Point_3(d)).has_on(p)) return false;
+      }
     }
-    if(inside) return true;
+    in_a_cell = in_a_cell || inside;
   }
-  return false;
+  return in_a_cell;
 }
 
 } // namespace internal

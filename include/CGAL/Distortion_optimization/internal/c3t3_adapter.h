@@ -167,7 +167,10 @@ public:
     scale = coordinate_scale(source_largest, target_largest);
     check_comparable_sizes<3>((high - low).maxCoeff(), largest_extent(map.target));
     for(Vector<3>& y : map.target) y *= scale;
-    for(const auto& [cell, Dm] : cells) map.add_cell(cell, scale * Dm, +1);
+    for(std::size_t c = 0; c < cells.size(); ++c)
+      if(!map.add_cell(cells[c].first, scale * cells[c].second, +1))
+        throw Invalid_input("source cell " + std::to_string(c) + " of the complex is degenerate in double precision (its "
+                            "vertices are not exactly coplanar, but so nearly that its rounded edges are)");
   }
 
   // Writes the targets x of the free vertices into the target map.

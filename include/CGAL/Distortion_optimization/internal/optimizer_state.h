@@ -78,9 +78,15 @@ public:
         throw Invalid_input("the distortion of cell " + std::to_string(c) + " of the start map under '" + measure_.name() +
                             "' exceeds the largest double, though the cell is not inverted: it is nearly flat, or "
                             "the measure's weights are too large");
-      if(!std::isfinite(value_[c]))
+      if(!std::isfinite(value_[c])) {
+        std::string remedy = "untangle the map first";
+        if constexpr(n == 2) {
+          const std::int64_t closed = planar_obstruction(p_.map).closed;
+          if(closed >= 0) remedy = closed_piece_message(closed);
+        }
         throw Invalid_input("cell " + std::to_string(c) + " of the start map is inverted or degenerate, and the "
-                            "measure '" + measure_.name() + "' is infinite there: untangle the map first");
+                            "measure '" + measure_.name() + "' is infinite there: " + remedy);
+      }
     }
   }
 

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -101,14 +102,21 @@ struct Simplicial_map
     target.reserve(vertex_count);
   }
 
-  // Dm must be invertible and `sign` the orientation of the source cell (+1 or -1), decided by the
-  // adapter with an exact predicate: a floating-point determinant may get a nearly flat cell wrong.
-  void add_cell(const Cell& cell, const Matrix<n>& Dm, int sign)
+  // `sign` is the orientation of the source cell (+1 or -1), decided by the adapter with an exact
+  // predicate (a floating-point determinant may get a nearly flat cell's wrong). Returns false,
+  // adding nothing, where the cell is flat in doubles: its edges Dm, rounded, have a zero
+  // determinant or no finite inverse (vertices so nearly collinear or coplanar that no measure can
+  // be evaluated on the cell).
+  bool add_cell(const Cell& cell, const Matrix<n>& Dm, int sign)
   {
+    const double det = Dm.determinant();
+    const Matrix<n> inverse = Dm.inverse();
+    if(!(det != 0) || !inverse.allFinite()) return false;
     cells.push_back(cell);
-    inverse_rest.push_back(Dm.inverse());
-    rest_volume.push_back(std::abs(Dm.determinant()) / (n == 2 ? 2. : 6.));
+    inverse_rest.push_back(inverse);
+    rest_volume.push_back(std::abs(det) / (n == 2 ? 2. : 6.));
     rest_sign.push_back(static_cast<signed char>(sign > 0 ? 1 : -1));
+    return true;
   }
 
   Matrix<n> target_edges(std::size_t c) const
@@ -201,6 +209,84 @@ bool is_fragile(const Simplicial_map<n>& map, std::size_t c)
   }
   const double move = 64 * std::numeric_limits<double>::epsilon() * largest * std::sqrt(double(n));
   return !(map.rest_sign[c] * E.determinant() > move * gradients);
+}
+
+// Pieces of a triangle map's mesh that no map into the plane can take: one without border (a closed
+// surface) keeps the orientation of all its triangles under no map (the image of a locally
+// injective map would be open, and it is compact), so no untangling can succeed; one with handles
+// (genus > 0) under no injective map (keeping orientations, its border would have to cross
+// itself), so none can keep its free border from crossing: counted where `is_free` (if given) has
+// a vertex of its border free. Each piece by its lowest cell (-1 for none); genus from its Euler
+// characteristic V - E + F = 2 - 2 genus - borders.
+struct Planar_obstruction
+{
+  std::int64_t closed = -1, handles = -1;
+  long long genus = 0;   // of the piece with handles
+};
+
+inline Planar_obstruction planar_obstruction(const Simplicial_map<2>& map, const std::vector<unsigned char>* is_free = nullptr)
+{
+  const std::size_t nv = map.target.size(), nc = map.number_of_cells();
+  // Union-find over the vertices: the cells' pieces, and apart the border loops.
+  std::vector<std::uint32_t> piece(nv), loop(nv);
+  for(std::uint32_t v = 0; v < nv; ++v) piece[v] = loop[v] = v;
+  const auto find = [](std::vector<std::uint32_t>& root, std::uint32_t v) {
+    while(root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  for(const auto& cell : map.cells)
+    for(int i = 1; i < 3; ++i) piece[find(piece, cell[i])] = find(piece, cell[0]);
+  // Per piece (at its root): vertices - edges + cells, and border loops.
+  std::vector<long long> euler(nv, 0), loops(nv, 0);
+  std::vector<unsigned char> free_border(nv, 0);   // per root
+  std::vector<unsigned char> used(nv, 0);
+  for(const auto& cell : map.cells) {
+    ++euler[find(piece, cell[0])];
+    for(auto v : cell) used[v] = 1;
+  }
+  for(std::uint32_t v = 0; v < nv; ++v)
+    if(used[v]) ++euler[find(piece, v)];
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;   // (smaller vertex, larger vertex)
+  edges.reserve(3 * nc);
+  for(const auto& cell : map.cells)
+    for(int i = 0; i < 3; ++i) edges.emplace_back(std::minmax(cell[i], cell[(i + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  std::vector<unsigned char> on_border(nv, 0);
+  for(std::size_t i = 0, j; i < edges.size(); i = j) {
+    for(j = i + 1; j < edges.size() && edges[j] == edges[i]; ++j) {}
+    --euler[find(piece, edges[i].first)];
+    if(j == i + 1) {   // a border edge
+      loop[find(loop, edges[i].first)] = find(loop, edges[i].second);
+      on_border[edges[i].first] = on_border[edges[i].second] = 1;
+    }
+  }
+  for(std::uint32_t v = 0; v < nv; ++v) {
+    if(on_border[v] && find(loop, v) == v) ++loops[find(piece, v)];
+    if(on_border[v] && (!is_free || (*is_free)[v])) free_border[find(piece, v)] = 1;
+  }
+  Planar_obstruction o;
+  for(std::size_t c = 0; c < nc; ++c) {
+    const std::uint32_t root = find(piece, map.cells[c][0]);
+    const long long genus = (2 - euler[root] - loops[root]) / 2;
+    if(o.closed < 0 && loops[root] == 0) o.closed = static_cast<std::int64_t>(c);
+    if(o.handles < 0 && free_border[root] && genus > 0) o.handles = static_cast<std::int64_t>(c), o.genus = genus;
+  }
+  return o;
+}
+
+// Why a map with the closed piece of cell `c` cannot be untangled.
+inline std::string closed_piece_message(std::int64_t c)
+{
+  return "the piece of the mesh with cell " + std::to_string(c) + " has no border (a closed surface), and no map of a "
+         "closed surface into the plane keeps the orientation of all its triangles: no untangling can help (cut it open)";
+}
+
+// Why no injective map of the piece with cell `c` and `genus` handles into the plane exists.
+inline std::string handles_message(std::int64_t c, long long genus)
+{
+  return "the piece of the mesh with cell " + std::to_string(c) + " has " + std::to_string(genus) +
+         (genus == 1 ? " handle" : " handles") + " (genus " + std::to_string(genus) + "), and no map of it into the plane "
+         "is injective: its free border cannot be kept from crossing itself (fix the border, or cut the handles open)";
 }
 
 } // namespace internal

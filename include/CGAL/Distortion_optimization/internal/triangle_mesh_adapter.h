@@ -123,7 +123,9 @@ public:
           cell[k] = static_cast<typename Simplicial_map<2>::Index>(3 * c + k);
         }
       }
-      map.add_cell(cell, rest_edges(p, q, r), sign);
+      if(!map.add_cell(cell, rest_edges(p, q, r), sign))
+        throw Invalid_input("source face " + std::to_string(c) + " is degenerate in double precision (its vertices are "
+                            "not exactly collinear, but so nearly that its rounded edges are)");
       cell_of.push_back(f);
     }
   }

@@ -59,8 +59,8 @@ inline bool is_convex_loop(const Optimization_problem<2>& p, const std::vector<s
 // (at most two) or the affine map (three) that puts the constrained vertices back on their
 // targets; with more, the boundary on the constrained targets, which must then be the boundary's
 // vertices on a convex polygon (is_convex_loop(): Tutte's theorem holds for any convex boundary).
-// Returns false, x unspecified, where it does not apply: the mesh is not a disk (one boundary loop
-// through every boundary vertex, Euler characteristic 1), more than three vertices are constrained
+// Returns false, x unspecified, where it does not apply: the mesh is not a disk (one piece, one
+// boundary loop through every boundary vertex, Euler characteristic 1), more than three vertices are constrained
 // and they are not a convex boundary, two constrained vertices share a target, three constrained
 // vertices' targets are not as their embedding oriented (no affine map keeping orientations sends
 // them there), or the solve fails.
@@ -115,6 +115,18 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
     if(v == start) break;
   }
   if(loop.size() != boundary_edges || !(perimeter > 0)) return false;   // more than one loop
+  // One piece: every vertex joined to the loop (a disk beside a closed surface passes the counts
+  // above, and the closed one would be collapsed).
+  std::vector<unsigned char> reached(nv, 0);
+  std::vector<std::uint32_t> stack(loop);
+  for(std::uint32_t v : loop) reached[v] = 1;
+  while(!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    for(std::uint32_t w : neighbours[v])
+      if(!reached[w]) reached[w] = 1, stack.push_back(w);
+  }
+  if(std::find(reached.begin(), reached.end(), 0) != reached.end()) return false;
 
   // More than three constrained vertices: the boundary's, exactly, on a convex polygon.
   const bool onto_targets = constrained.size() > 3;

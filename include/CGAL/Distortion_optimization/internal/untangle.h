@@ -463,6 +463,11 @@ Untangle_report untangle_from_start(Optimization_problem<n>& problem, const Geom
 {
   std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);   // throws if the start crosses
   if(!guard) return untangle_in_parts(problem, traits, options);
+  if constexpr(n == 2) {
+    const Planar_obstruction o = planar_obstruction(problem.map, &problem.is_free);
+    if(o.handles >= 0)
+      throw Invalid_input("untangling with global injectivity cannot succeed: " + handles_message(o.handles, o.genus));
+  }
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Vector<n>> start_targets = problem.map.target;
   Options unguarded = options;
@@ -492,11 +497,18 @@ Untangle_report untangle_from_start(Optimization_problem<n>& problem, const Geom
 // with at most three constrained vertices or its boundary fixed on a convex polygon, from its Tutte
 // embedding (tutte_embedding.h): an injective map that is untangled already unless rounding left
 // cells flat. Throws as
-// untangle_everywhere() when neither applies or succeeds, the map unchanged.
+// untangle_everywhere() when neither applies or succeeds, the map unchanged, and at once for a
+// tangled triangle map with a closed piece, or with the boundary guard a piece with handles and a
+// free border (planar_obstruction()).
 template <int n, class GeomTraits>
 Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   const auto start = std::chrono::steady_clock::now();
+  if constexpr(n == 2) {
+    const Planar_obstruction o = planar_obstruction(problem.map);
+    if(o.closed >= 0 && number_of_tangled_cells(problem.map, traits, Workers(options.threads)) > 0)
+      throw Invalid_input("untangling cannot succeed: " + closed_piece_message(o.closed));
+  }
   std::size_t rounds = 0;   // the last round reported, numbered over all attempts
   try {
     return untangle_from_start(problem, traits, recording_rounds(options, rounds));
