@@ -138,7 +138,7 @@ flattened (checked with exact predicates); the energy never increases.
                           (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
-    \cgalParamExtra{The boundary of the start map must not cross itself, otherwise
+    \cgalParamExtra{The boundary of the start map must not cross itself, nor may a piece of the mesh lie inside another, otherwise
                     `Distortion_optimization::Crossing_start_boundary` is thrown (only when some free vertex
                     is on the boundary).}
   \cgalParamNEnd
@@ -211,9 +211,10 @@ number, and, when the measure is infinite on inverted cells (normalized), a star
 inverted or flat triangle (the message names it) unless `untangle_first` is set; with
 `untangle_first`, when the untangling fails; and for a measure that decreases as the map shrinks
 (Dirichlet, or a sum or product with it) when fewer than three vertices are constrained and none
-slides (its minimum collapses the map).
+slides, in the mesh or in one of its pieces (its minimum collapses the map or that piece).
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
-`preserve_global_injectivity` when the boundary of the start map crosses itself.
+`preserve_global_injectivity` when the boundary of the start map crosses itself or one piece of it
+lies inside another.
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
@@ -338,7 +339,7 @@ are the points of the triangulation.
                           (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
-    \cgalParamExtra{The boundary of the start map must not cross itself, otherwise
+    \cgalParamExtra{The boundary of the start map must not cross itself, nor may a piece of the mesh lie inside another, otherwise
                     `Distortion_optimization::Crossing_start_boundary` is thrown (only when some free vertex
                     is on the boundary).}
   \cgalParamNEnd
@@ -413,11 +414,12 @@ are the points of the triangulation.
 \returns a `Distortion_optimization::Result`
 
 \throws Distortion_optimization::Invalid_input, leaving `target` unchanged, as the triangle-mesh
-overload (a measure that decreases as the map shrinks needs four constrained vertices here, or
+overload (a measure that decreases as the map shrinks needs four constrained vertices in each piece here, or
 sliding ones), and for a complex with no cell or with a source tetrahedron that is not positively
 oriented.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
-`preserve_global_injectivity` when the boundary of the start map crosses itself.
+`preserve_global_injectivity` when the boundary of the start map crosses itself or one piece of it
+lies inside another.
 */
 template <class C3T3, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>

@@ -200,6 +200,57 @@ TEST(CommandLine, OptimizesAPlanarPairAndReportsJson)
   EXPECT_EQ(json_value(evaluated, "harmonic_start_energy"), json_value(json, "initial_energy"));
 }
 
+// A grid at half its size that grows back, border free, towards a small triangle beside it (a
+// piece of its own): the tool keeps the triangle outside (hostile round 8: it ended inside a grid
+// face). A start with the triangle already inside is optimized without the guard, with a warning.
+TEST(CommandLine, FreeBoundaryModeKeepsPiecesApart)
+{
+  const auto write_pair = [](const std::string& source, const std::string& target, double x, double y) {
+    IO::Triangle_soup s, t;
+    for(int j = 0; j <= 4; ++j)
+      for(int i = 0; i <= 4; ++i) {
+        s.points.push_back({double(i), double(j), 0});
+        t.points.push_back({0.5 * i, 0.5 * j, 0});
+      }
+    for(std::size_t j = 0; j < 4; ++j)
+      for(std::size_t i = 0; i < 4; ++i) {
+        const std::size_t a = j * 5 + i, b = a + 1, c = a + 5, d = c + 1;
+        s.cells.push_back({a, b, d});
+        s.cells.push_back({a, d, c});
+      }
+    for(const auto& p : {std::array<double, 2>{0, 0}, {0.04, 0}, {0.02, 0.04}}) {
+      s.points.push_back({p[0], p[1], 0});
+      t.points.push_back({x + p[0], y + p[1], 0});
+    }
+    s.cells.push_back({25, 26, 27});
+    t.cells = s.cells;
+    IO::write_triangle_soup(source, s);
+    IO::write_triangle_soup(target, t);
+  };
+  const std::string s = temp("pieces_s.off"), t = temp("pieces_t.off"), o = temp("pieces_o.off");
+  write_pair(s, t, 2.05, 1.1);
+  Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --fix none --measure isometric");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(result.output.find("warning"), std::string::npos) << result.output;
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const IO::Triangle_soup out = IO::read_triangle_soup(o);
+  const auto triangle = [&](const std::array<std::size_t, 3>& c) {
+    const auto p = [&](std::size_t v) { return K::Point_2(out.points[v][0], out.points[v][1]); };
+    return K::Triangle_2(p(c[0]), p(c[1]), p(c[2]));
+  };
+  double right = 0;
+  for(std::size_t v = 0; v < 25; ++v) right = std::max(right, out.points[v][0]);
+  EXPECT_GT(right, out.points[25][0]);   // the grid reached beyond the triangle somewhere
+  for(std::size_t c = 0; c < 32; ++c) EXPECT_FALSE(CGAL::do_intersect(triangle(out.cells[c]), triangle(out.cells[32]))) << c;
+
+  write_pair(s, t, 0.6, 0.6);
+  result = run("--source " + s + " --target " + t + " --output " + o + " --fix none --measure isometric --iterations 3");
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("warning: the boundary of the start map intersects itself, or one of its pieces lies inside "
+                               "another: global injectivity cannot be preserved; optimized without the guard"),
+            std::string::npos) << result.output;
+}
+
 TEST(CommandLine, FixFileAndFreeBoundary)
 {
   const std::string s = temp("s2.off"), t = temp("t2.off"), o = temp("o2.off"), f = temp("fix.txt");

@@ -425,6 +425,29 @@ TEST(MinimizeDistortion, AMeasureThatShrinksTheMapNeedsThreeConstrainedVertices)
   EXPECT_NO_THROW(CGAL::minimize_distortion(m.mesh, m.uv, DO::ARAP(), CGAL::parameters::vertex_is_constrained_map(pinned)));
 }
 
+// Per piece: a second grid beside the first, none of its vertices constrained, would collapse alone.
+TEST(MinimizeDistortion, AMeasureThatShrinksTheMapNeedsThreeConstrainedVerticesPerPiece)
+{
+  Mesh2 mesh = planar_grid(4);
+  ASSERT_TRUE(mesh.join(grid<Mesh2>(4, [](double x, double y) { return Point_2(x + 2, y); })));
+  auto uv = make_target(mesh, [](const Point_2& p) { return Point_2(1.1 * p.x(), p.y()); });
+  auto pinned = mesh.add_property_map<Mesh2::Vertex_index, bool>("v:pinned", false).first;
+  for(unsigned v : {0u, 4u, 24u}) pinned[Mesh2::Vertex_index(v)] = true;
+  const std::vector<Point_2> before = targets_of(mesh, uv);
+  try {
+    CGAL::minimize_distortion(mesh, uv, DO::Dirichlet(), CGAL::parameters::vertex_is_constrained_map(pinned));
+    ADD_FAILURE() << "the second piece's collapse was run";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("shrinks, and in the piece of the mesh with cell 32 no vertex is constrained: its "
+                                         "minimum collapses that piece"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(targets_of(mesh, uv), before);
+  for(unsigned v : {25u, 29u, 49u}) pinned[Mesh2::Vertex_index(v)] = true;
+  const auto r = CGAL::minimize_distortion(mesh, uv, DO::Dirichlet(), CGAL::parameters::vertex_is_constrained_map(pinned));
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_LT(r.final_energy, r.initial_energy);
+}
+
 TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
 {
   for(const char* name : {"nefertiti.off", "mushroom.off"}) {

@@ -25,8 +25,8 @@ public:
 
 /// \ingroup PkgDistortionOptimizationRef
 /// The `Invalid_input` thrown when `preserve_global_injectivity` is asked for a start map whose
-/// boundary already crosses itself: the guard cannot keep what the start does not have (a caller
-/// may then run without it).
+/// boundary already crosses itself, or with a piece of the mesh inside another: the guard cannot
+/// keep what the start does not have (a caller may then run without it).
 class Crossing_start_boundary : public Invalid_input
 {
 public:

@@ -139,9 +139,9 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_swee
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(global_solver_t, global_solver)
 
 /// `bool`: keep the map globally injective when boundary vertices are free (paper section 3.2):
-/// a move that would make the target boundary cross itself is shortened. The start map's
-/// boundary must not intersect itself. Default `false` (with a fixed boundary there is nothing to
-/// guard).
+/// a move that would make the target boundary cross itself, or a piece of the mesh grow over
+/// another, is shortened. The start map's boundary must not intersect itself, nor a piece lie
+/// inside another. Default `false` (with a fixed boundary there is nothing to guard).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(preserve_global_injectivity_t, preserve_global_injectivity)
 
 /// `bool`: when the start map has inverted or flat cells, untangle it first

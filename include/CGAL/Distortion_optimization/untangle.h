@@ -102,7 +102,8 @@ a measure from the untangled map.
                           (exact predicates) (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
-    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself,
+    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself (or
+                    a piece of the mesh lies inside another),
                     `Distortion_optimization::Crossing_start_boundary` is thrown.}
   \cgalParamNEnd
 
@@ -159,7 +160,8 @@ border (no map of a closed surface into the plane keeps its triangles' orientati
 \throws Distortion_optimization::Unmovable_inverted_cell (an `Invalid_input`) for an inverted
 cell whose vertices are all constrained, before any round.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
-`preserve_global_injectivity` when the boundary of the start map crosses itself.
+`preserve_global_injectivity` when the boundary of the start map crosses itself or one piece of it
+lies inside another.
 */
 template <class TriangleMesh, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::enable_if_t<!internal::Is_c3t3<TriangleMesh>::value, Untangle_result>
@@ -227,7 +229,8 @@ cells in the complex count).
                           (exact predicates) (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
-    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself,
+    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself (or
+                    a piece of the mesh lies inside another),
                     `Distortion_optimization::Crossing_start_boundary` is thrown.}
   \cgalParamNEnd
 
@@ -277,7 +280,8 @@ cells in the complex count).
 overload, and for a complex with no cell or with a source tetrahedron that is not positively
 oriented.
 \throws Distortion_optimization::Crossing_start_boundary (an `Invalid_input`) with
-`preserve_global_injectivity` when the boundary of the start map crosses itself.
+`preserve_global_injectivity` when the boundary of the start map crosses itself or one piece of it
+lies inside another.
 */
 template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::enable_if_t<internal::Is_c3t3<C3T3>::value, Untangle_result>

@@ -15,6 +15,18 @@
 // CGAL::AABB_tree cannot refit a single leaf (and is 3D only), hence this tree; is_injective() runs
 // CGAL::box_self_intersection_d on current boxes. Not thread-safe: queries share scratch space.
 //
+// Several pieces. For one connected piece, positive cells and a boundary that does not cross itself
+// imply injectivity; pieces apart can still come to lie one inside another without any crossing.
+// Given the pieces (per-vertex labels), is_injective() also asks whether a boundary component of
+// one piece lies inside another, by the parity of a ray's crossings with that piece's boundary
+// (one vertex per component is enough: components that do not cross are inside or outside whole).
+// A move of v changes its piece's image only by the simplices its ring's faces sweep (the
+// triangles (old v, new v, w) in 2D, the tetrahedra (old v, new v, w1, w2) in 3D: their sum is the
+// difference of the new and old stars as chains), so accepts_move() refuses a move whose swept
+// simplices hold a boundary vertex of another piece: a component that comes to lie inside had all
+// its vertices swept over; a piece cannot come inside another by one move, as the faces of its
+// components away from v keep their place.
+//
 // Clearance. Moves also keep faces without a common vertex apart by more than 64 units in the last
 // place of their coordinates (clearance()): a vertex that stops 1e-19 from another boundary edge
 // is outside it in doubles, but may be on it or across once the map is written in decimal and
@@ -24,6 +36,7 @@
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
 
+#include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
 #include <CGAL/Distance_2/Segment_2_Segment_2.h>
@@ -81,7 +94,9 @@ public:
     return result;
   }
 
-  Boundary_guard(std::vector<Face> faces, std::size_t number_of_vertices)
+  // `faces`: the boundary faces (boundary_faces()); `piece`: per vertex, a label of its piece of
+  // cells (connected_pieces()), or empty for one piece.
+  Boundary_guard(std::vector<Face> faces, std::size_t number_of_vertices, const std::vector<std::uint32_t>& piece = {})
     : faces_(std::move(faces)), first_face_(number_of_vertices + 1, 0)
   {
     for(const Face& f : faces_)
@@ -94,6 +109,7 @@ public:
     std::vector<std::size_t> next(first_face_.begin(), first_face_.end() - 1);
     for(std::uint32_t f = 0; f < faces_.size(); ++f)
       for(std::uint32_t v : faces_[f]) vertex_faces_[next[v]++] = f;
+    if(!piece.empty()) find_components(piece);
   }
 
   bool empty() const { return faces_.empty(); }
@@ -118,6 +134,7 @@ public:
     leaf_.assign(B, 0);
     refits_ = 0;
     if(B > 0) build(order.data(), order.data() + B, -1, boxes, centres);
+    if(several_pieces()) committed_ = target;
     // A map whose boundary is already closer to itself than that (given so) keeps the exact tests.
     // A quarter of the clearance here: distances so small are computed to a few percent, and a
     // pair that a move kept just beyond the clearance must not turn it off.
@@ -154,7 +171,7 @@ public:
     const double near = keeps_clearance_ ? 2 * clearance(star) : 0.;
     for(Box& b : ring_boxes_) b = grown(b, near);
     star = grown(star, near);
-    return visit(star, [&](std::uint32_t g) {   // false stops the traversal
+    const bool apart = visit(star, [&](std::uint32_t g) {   // false stops the traversal
       if(contains(g, v)) return true;
       const Box box = face_box(g, target);
       if(!box.intersects(star)) return true;
@@ -163,11 +180,13 @@ public:
         if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target, keeps_clearance_ ? 1. : 0.)) return false;
       return true;
     });
+    return apart && (!several_pieces() || sweeps_no_other_piece(v, target));
   }
 
   // To call once a move of v is accepted (target holds v's new position).
   void commit_move(std::size_t v, const std::vector<Vector<n>>& target)
   {
+    if(several_pieces()) committed_[v] = target[v];
     for(std::size_t i = first_face_[v]; i < first_face_[v + 1]; ++i) {
       const std::uint32_t f = vertex_faces_[i];
       degenerate_[f] = is_degenerate(f, target);
@@ -185,9 +204,11 @@ public:
     if(refits_ > faces_.size() / 4 + 16) rebuild(target);
   }
 
-  // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests. If
-  // `crossing` is given, it receives the vertices of every face that is degenerate or meets another
-  // improperly (not only the first found), so that a caller may hold them back. With a positive
+  // The whole boundary, for moves of many vertices at once: O(B log B) boxes plus exact tests, and
+  // with several pieces, when nothing crosses, the ray tests of each component against the pieces
+  // whose box holds it. If `crossing` is given, it receives the vertices of every face that is
+  // degenerate or meets another improperly (not only the first found), or else of the boundaries of
+  // two pieces one inside the other, so that a caller may hold them back. With a positive
   // `clearance_fraction` (a move's check: 1), faces closer than that fraction of their clearance()
   // count as meeting.
   bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr,
@@ -225,8 +246,16 @@ public:
         report(b.info());
       }
     });
-    return injective;
+    if(!injective || !several_pieces()) return injective;
+    const std::pair<std::uint32_t, std::uint32_t> nested = nested_pieces(target);
+    if(nested.first == nested.second) return true;
+    for(std::uint32_t p : {nested.first, nested.second})
+      for(std::size_t i = piece_first_face_[p]; i < piece_first_face_[p + 1]; ++i) report(piece_faces_[i]);
+    return false;
   }
+
+  // Whether the guard knows of two or more pieces with boundary.
+  bool several_pieces() const { return !components_.empty(); }
 
 private:
   using Box = Eigen::AlignedBox<double, n>;
@@ -249,6 +278,173 @@ private:
   bool keeps_clearance_ = false;
   std::vector<std::int32_t> stack_;          // scratch of accepts_move()
   std::vector<Box> ring_boxes_;
+  // With several pieces (all empty otherwise): per face its piece (0, 1, ...), the faces of each
+  // piece, per boundary component (faces joined by vertices) one vertex, and the positions of the
+  // last rebuild() or commit_move(), where accepts_move()'s sweeps start.
+  std::vector<std::uint32_t> face_piece_;
+  std::vector<std::size_t> piece_first_face_;   // faces of p: piece_faces_[piece_first_face_[p], piece_first_face_[p + 1])
+  std::vector<std::uint32_t> piece_faces_;
+  std::vector<std::uint32_t> components_;
+  std::vector<Vector<n>> committed_;
+  std::vector<std::array<Vector<n>, n + 1>> swept_;   // scratch of accepts_move()
+
+  void find_components(const std::vector<std::uint32_t>& piece)
+  {
+    const std::size_t nv = first_face_.size() - 1;
+    CGAL_precondition(piece.size() == nv);
+    std::vector<std::uint32_t> label(nv, 0), root(nv);   // label: 1 + the piece's number
+    std::uint32_t pieces = 0;
+    face_piece_.resize(faces_.size());
+    for(std::uint32_t f = 0; f < faces_.size(); ++f) {
+      std::uint32_t& l = label[piece[faces_[f][0]]];
+      if(l == 0) l = ++pieces;
+      face_piece_[f] = l - 1;
+    }
+    if(pieces < 2) {
+      face_piece_.clear();
+      return;
+    }
+    piece_first_face_.assign(pieces + 1, 0);
+    for(std::uint32_t p : face_piece_) ++piece_first_face_[p + 1];
+    std::partial_sum(piece_first_face_.begin(), piece_first_face_.end(), piece_first_face_.begin());
+    piece_faces_.resize(faces_.size());
+    std::vector<std::size_t> next(piece_first_face_.begin(), piece_first_face_.end() - 1);
+    for(std::uint32_t f = 0; f < faces_.size(); ++f) piece_faces_[next[face_piece_[f]]++] = f;
+    std::iota(root.begin(), root.end(), 0u);
+    for(const Face& f : faces_)
+      for(int i = 1; i < n; ++i) root[find_root(root, f[i])] = find_root(root, f[0]);
+    for(std::uint32_t v = 0; v < nv; ++v)
+      if(is_on_boundary(v) && find_root(root, v) == v) components_.push_back(v);
+  }
+
+  std::uint32_t piece_of(std::size_t v) const { return face_piece_[vertex_faces_[first_face_[v]]]; }
+
+  // Two pieces, the first with a boundary component inside the second, or (0, 0). Assumes that no
+  // faces cross: a component is then inside or outside another piece whole.
+  std::pair<std::uint32_t, std::uint32_t> nested_pieces(const std::vector<Vector<n>>& target) const
+  {
+    const std::size_t pieces = piece_first_face_.size() - 1;
+    std::vector<Box> box(pieces);
+    for(std::uint32_t f = 0; f < faces_.size(); ++f) box[face_piece_[f]].extend(face_box(f, target));
+    for(std::uint32_t r : components_)
+      for(std::uint32_t q = 0; q < pieces; ++q)
+        if(q != piece_of(r) && box[q].contains(target[r]) && is_inside(target[r], q, target)) return {piece_of(r), q};
+    return {0, 0};
+  }
+
+  // Whether x, on no face of piece q, is inside q's image: an odd number of q's faces cross the ray
+  // from x along +x, x raised by an infinitesimal (eps in y; in 3D, (eps, eps^2) in (y, z)) so that
+  // the ray meets no face's vertex or edge (Edelsbrunner and Muecke's simulation of simplicity).
+  // On a face (then the boundaries meet): inside.
+  bool is_inside(const Vector<n>& x, std::uint32_t q, const std::vector<Vector<n>>& t) const
+  {
+    bool inside = false;
+    for(std::size_t i = piece_first_face_[q]; i < piece_first_face_[q + 1]; ++i) {
+      const Face& f = faces_[piece_faces_[i]];
+      if constexpr(n == 2) {
+        const Vector<2>& a = t[f[0]];
+        const Vector<2>& b = t[f[1]];
+        if((a[1] <= x[1]) == (b[1] <= x[1])) continue;   // the raised ray passes above or below
+        const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), K::Point_2(x[0], x[1]));
+        if(o == CGAL::COLLINEAR) return true;
+        inside ^= (o == (b[1] > a[1] ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN));   // the face is ahead of x
+      } else {
+        const auto yz = [](const Vector<3>& p) { return K::Point_2(p[1], p[2]); };
+        const CGAL::Orientation s = CGAL::orientation(yz(t[f[0]]), yz(t[f[1]]), yz(t[f[2]]));
+        if(s == CGAL::COLLINEAR) continue;   // parallel to the ray: the raised ray misses it
+        // The side of the raised x from each projected edge: the terms of eps and eps^2 break ties.
+        const auto side = [&](const Vector<3>& a, const Vector<3>& b) {
+          const CGAL::Orientation o = CGAL::orientation(yz(a), yz(b), yz(x));
+          if(o != CGAL::COLLINEAR) return o;
+          if(a[2] != b[2]) return a[2] > b[2] ? CGAL::POSITIVE : CGAL::NEGATIVE;
+          return b[1] > a[1] ? CGAL::POSITIVE : CGAL::NEGATIVE;
+        };
+        if(side(t[f[0]], t[f[1]]) != s || side(t[f[1]], t[f[2]]) != s || side(t[f[2]], t[f[0]]) != s) continue;
+        // The ray meets the face's plane ahead of x iff x is on the side that +x leaves.
+        const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), point(f[2], t), K::Point_3(x[0], x[1], x[2]));
+        if(o == CGAL::COPLANAR) return true;
+        inside ^= (o == -s);
+      }
+    }
+    return inside;
+  }
+
+  // Whether the simplices the ring of v sweeps from committed_[v] to target[v] hold no boundary
+  // vertex of another piece (closed simplices).
+  bool sweeps_no_other_piece(std::size_t v, const std::vector<Vector<n>>& target)
+  {
+    std::vector<std::array<Vector<n>, n + 1>>& swept = swept_;
+    swept.clear();
+    Box region;
+    for(std::size_t i = first_face_[v]; i < first_face_[v + 1]; ++i) {
+      std::array<Vector<n>, n + 1> s;
+      s[0] = committed_[v];
+      s[1] = target[v];
+      for(int j = 0, k = 2; j < n; ++j)
+        if(faces_[vertex_faces_[i]][j] != v) s[k++] = target[faces_[vertex_faces_[i]][j]];
+      for(const Vector<n>& p : s) region.extend(p);
+      swept.push_back(s);
+    }
+    const std::uint32_t own = piece_of(v);
+    return visit(region, [&](std::uint32_t g) {
+      if(face_piece_[g] == own) return true;
+      for(std::uint32_t u : faces_[g])
+        if(region.contains(target[u]))
+          for(const auto& s : swept)
+            if(in_closed_simplex(s, target[u])) return false;
+      return true;
+    });
+  }
+
+  // Whether x is in the closed convex hull of the n + 1 points of s (exact).
+  static bool in_closed_simplex(const std::array<Vector<n>, n + 1>& s, const Vector<n>& x)
+  {
+    const auto p = [](const Vector<n>& y) {
+      if constexpr(n == 2) return K::Point_2(y[0], y[1]);
+      else return K::Point_3(y[0], y[1], y[2]);
+    };
+    if constexpr(n == 2) {
+      const CGAL::Orientation o = CGAL::orientation(p(s[0]), p(s[1]), p(s[2]));
+      if(o != CGAL::COLLINEAR) {
+        for(int i = 0; i < 3; ++i)
+          if(CGAL::orientation(p(s[i]), p(s[(i + 1) % 3]), p(x)) == -o) return false;
+        return true;
+      }
+    } else {
+      const CGAL::Orientation o = CGAL::orientation(p(s[0]), p(s[1]), p(s[2]), p(s[3]));
+      if(o != CGAL::COPLANAR) {
+        for(int i = 0; i < 4; ++i) {
+          std::array<Vector<n>, 4> r = s;
+          r[i] = x;
+          if(CGAL::orientation(p(r[0]), p(r[1]), p(r[2]), p(r[3])) == -o) return false;
+        }
+        return true;
+      }
+      // Flat: the union of its non-degenerate triangles, in their plane.
+      bool flat = false, in = false;
+      for(int skip = 0; skip < 4 && !in; ++skip) {
+        std::array<K::Point_3, 3> tri;
+        for(int j = 0, k = 0; j < 4; ++j)
+          if(j != skip) tri[k++] = p(s[j]);
+        if(CGAL::collinear(tri[0], tri[1], tri[2])) continue;
+        if(!flat && CGAL::orientation(tri[0], tri[1], tri[2], p(x)) != CGAL::COPLANAR) return false;
+        flat = true;
+        in = CGAL::coplanar_orientation(tri[0], tri[1], tri[2], p(x)) != CGAL::NEGATIVE &&
+             CGAL::coplanar_orientation(tri[1], tri[2], tri[0], p(x)) != CGAL::NEGATIVE &&
+             CGAL::coplanar_orientation(tri[2], tri[0], tri[1], p(x)) != CGAL::NEGATIVE;
+      }
+      if(flat) return in;
+    }
+    // All on one line: x on it, within the points' box.
+    Box hull;
+    std::size_t other = 0;
+    for(std::size_t i = 0; i <= n; ++i) {
+      hull.extend(s[i]);
+      if(other == 0 && s[i] != s[0]) other = i;
+    }
+    if(other == 0) return x == s[0];
+    return hull.contains(x) && CGAL::collinear(p(s[0]), p(s[other]), p(x));
+  }
 
   Box face_box(std::uint32_t f, const std::vector<Vector<n>>& target) const
   {

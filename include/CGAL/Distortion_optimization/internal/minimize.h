@@ -37,19 +37,21 @@ namespace internal {
 
 // The boundary guard of a run with global injectivity, built for the start map, where it has work:
 // some free vertex on the boundary (null otherwise). Throws Crossing_start_boundary if the start's
-// boundary intersects itself.
+// boundary intersects itself or one of its pieces lies inside another.
 template <int n>
 std::unique_ptr<Boundary_guard<n>> make_boundary_guard(const Optimization_problem<n>& problem, const Options& options)
 {
   if(!options.global_injectivity) return nullptr;
   auto guard = std::make_unique<Boundary_guard<n>>(Boundary_guard<n>::boundary_faces(problem.map.cells),
-                                                   problem.number_of_vertices());
+                                                   problem.number_of_vertices(),
+                                                   connected_pieces(problem.map.cells, problem.number_of_vertices()));
   bool has_work = false;
   for(std::size_t v = 0; v < problem.number_of_vertices() && !has_work; ++v)
     has_work = problem.is_free[v] && guard->is_on_boundary(v);
   if(!has_work) return nullptr;
   if(!guard->is_injective(problem.map.target))
-    throw Crossing_start_boundary("the boundary of the start map intersects itself: global injectivity cannot be preserved");
+    throw Crossing_start_boundary("the boundary of the start map intersects itself, or one of its pieces lies inside another: "
+                                  "global injectivity cannot be preserved");
   guard->rebuild(problem.map.target);
   return guard;
 }
@@ -150,22 +152,27 @@ private:
 // Throws unless something holds the map's size where the measure decreases as the map shrinks
 // (Dirichlet, or a sum or product with it): then its infimum is the map collapsed onto its
 // constrained vertices, every cell flat, and a run ends near that unless at least n + 1 vertices
-// are constrained or some slide on a surface.
+// are constrained or some slide on a surface. Per piece of the mesh (joined by no vertex): a piece
+// with nothing held collapses alone.
 template <int n, class Measure>
 void check_size_is_held(const Optimization_problem<n>& problem, const Measure& measure)
 {
   if(!(measure.template value<n>(Singular_values<n>::Constant(0.5)) < value_on_rigid_maps<n>(measure))) return;
-  std::size_t constrained = 0;
-  for(std::size_t v = 0; v < problem.number_of_vertices(); ++v) {
-    if(problem.slides(v)) return;
-    constrained += !problem.is_free[v];
-  }
-  if(constrained > n) return;
+  const std::vector<std::uint32_t> piece = connected_pieces(problem.map.cells, problem.number_of_vertices());
+  std::vector<std::size_t> held(piece.size(), 0);   // per piece's root: constrained vertices, n + 1 if one slides
+  for(std::size_t v = 0; v < piece.size(); ++v) held[piece[v]] += problem.slides(v) ? n + 1 : !problem.is_free[v];
+  const auto& cells = problem.map.cells;
+  const auto weak = std::find_if(cells.begin(), cells.end(), [&](const auto& c) { return held[piece[c[0]]] <= n; });
+  if(weak == cells.end()) return;
+  const std::size_t constrained = held[piece[(*weak)[0]]];
+  const bool one_piece = std::all_of(cells.begin(), cells.end(), [&](const auto& c) { return piece[c[0]] == piece[cells[0][0]]; });
   throw Invalid_input("the measure " + measure.name() + " decreases as the map shrinks, and " +
+                      (one_piece ? std::string() : "in the piece of the mesh with cell " + std::to_string(weak - cells.begin()) + " ") +
                       (constrained == 0 ? std::string("no vertex is") : "only " + std::to_string(constrained) +
                        (constrained == 1 ? " vertex is" : " vertices are")) +
-                      " constrained: its minimum collapses the map (every cell flat); constrain at least " +
-                      std::to_string(n + 1) + " vertices, e.g. the boundary");
+                      " constrained: its minimum collapses " + (one_piece ? "the map" : "that piece") +
+                      " (every cell flat); constrain at least " + std::to_string(n + 1) + " vertices" +
+                      (one_piece ? "" : " of each piece") + ", e.g. the boundary");
 }
 
 // Minimizes in place the target positions of problem.map; throws Invalid_input for a start the

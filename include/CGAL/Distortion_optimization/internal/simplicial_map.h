@@ -211,6 +211,26 @@ bool is_fragile(const Simplicial_map<n>& map, std::size_t c)
   return !(map.rest_sign[c] * E.determinant() > move * gradients);
 }
 
+// Union-find's root, halving the path on the way.
+inline std::uint32_t find_root(std::vector<std::uint32_t>& root, std::uint32_t v)
+{
+  while(root[v] != v) v = root[v] = root[root[v]];
+  return v;
+}
+
+// Per vertex, the root of its piece: the vertices of cells joined through shared vertices share it
+// (a vertex in no cell is its own).
+template <std::size_t k>
+std::vector<std::uint32_t> connected_pieces(const std::vector<std::array<std::uint32_t, k>>& cells, std::size_t nv)
+{
+  std::vector<std::uint32_t> piece(nv);
+  for(std::uint32_t v = 0; v < nv; ++v) piece[v] = v;
+  for(const auto& cell : cells)
+    for(std::size_t i = 1; i < k; ++i) piece[find_root(piece, cell[i])] = find_root(piece, cell[0]);
+  for(std::uint32_t v = 0; v < nv; ++v) piece[v] = find_root(piece, v);
+  return piece;
+}
+
 // Pieces of a triangle map's mesh that no map into the plane can take: one without border (a closed
 // surface) keeps the orientation of all its triangles under no map (the image of a locally
 // injective map would be open, and it is compact), so no untangling can succeed; one with handles
@@ -227,25 +247,19 @@ struct Planar_obstruction
 inline Planar_obstruction planar_obstruction(const Simplicial_map<2>& map, const std::vector<unsigned char>* is_free = nullptr)
 {
   const std::size_t nv = map.target.size(), nc = map.number_of_cells();
-  // Union-find over the vertices: the cells' pieces, and apart the border loops.
-  std::vector<std::uint32_t> piece(nv), loop(nv);
-  for(std::uint32_t v = 0; v < nv; ++v) piece[v] = loop[v] = v;
-  const auto find = [](std::vector<std::uint32_t>& root, std::uint32_t v) {
-    while(root[v] != v) v = root[v] = root[root[v]];
-    return v;
-  };
-  for(const auto& cell : map.cells)
-    for(int i = 1; i < 3; ++i) piece[find(piece, cell[i])] = find(piece, cell[0]);
+  // The cells' pieces, and apart (union-find over the vertices) the border loops.
+  std::vector<std::uint32_t> piece = connected_pieces(map.cells, nv), loop(nv);
+  for(std::uint32_t v = 0; v < nv; ++v) loop[v] = v;
   // Per piece (at its root): vertices - edges + cells, and border loops.
   std::vector<long long> euler(nv, 0), loops(nv, 0);
   std::vector<unsigned char> free_border(nv, 0);   // per root
   std::vector<unsigned char> used(nv, 0);
   for(const auto& cell : map.cells) {
-    ++euler[find(piece, cell[0])];
+    ++euler[piece[cell[0]]];
     for(auto v : cell) used[v] = 1;
   }
   for(std::uint32_t v = 0; v < nv; ++v)
-    if(used[v]) ++euler[find(piece, v)];
+    if(used[v]) ++euler[piece[v]];
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;   // (smaller vertex, larger vertex)
   edges.reserve(3 * nc);
   for(const auto& cell : map.cells)
@@ -254,19 +268,19 @@ inline Planar_obstruction planar_obstruction(const Simplicial_map<2>& map, const
   std::vector<unsigned char> on_border(nv, 0);
   for(std::size_t i = 0, j; i < edges.size(); i = j) {
     for(j = i + 1; j < edges.size() && edges[j] == edges[i]; ++j) {}
-    --euler[find(piece, edges[i].first)];
+    --euler[piece[edges[i].first]];
     if(j == i + 1) {   // a border edge
-      loop[find(loop, edges[i].first)] = find(loop, edges[i].second);
+      loop[find_root(loop, edges[i].first)] = find_root(loop, edges[i].second);
       on_border[edges[i].first] = on_border[edges[i].second] = 1;
     }
   }
   for(std::uint32_t v = 0; v < nv; ++v) {
-    if(on_border[v] && find(loop, v) == v) ++loops[find(piece, v)];
-    if(on_border[v] && (!is_free || (*is_free)[v])) free_border[find(piece, v)] = 1;
+    if(on_border[v] && find_root(loop, v) == v) ++loops[piece[v]];
+    if(on_border[v] && (!is_free || (*is_free)[v])) free_border[piece[v]] = 1;
   }
   Planar_obstruction o;
   for(std::size_t c = 0; c < nc; ++c) {
-    const std::uint32_t root = find(piece, map.cells[c][0]);
+    const std::uint32_t root = piece[map.cells[c][0]];
     const long long genus = (2 - euler[root] - loops[root]) / 2;
     if(o.closed < 0 && loops[root] == 0) o.closed = static_cast<std::int64_t>(c);
     if(o.handles < 0 && free_border[root] && genus > 0) o.handles = static_cast<std::int64_t>(c), o.genus = genus;
