@@ -29,6 +29,7 @@
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/initial_maps.h>
+#include <CGAL/Distortion_optimization/internal/boundary_guard.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 #include <CGAL/Distortion_optimization/mesh_quality.h>
@@ -142,10 +143,32 @@ void check_same_cells(const std::string& name, const Points& source_points, cons
 // Free-boundary mode (some border vertex free): the run keeps the boundary from crossing itself
 // (global injectivity). A start whose boundary already crosses itself cannot be guarded: then the
 // run goes on without the guard, with a warning.
+// Whether a planar map with no inverted cell is globally injective: its border crosses itself
+// nowhere and no piece lies inside another (the boundary guard's exact test).
+template <class UV>
+bool is_globally_injective(const Mesh& mesh, const UV& uv)
+{
+  using Guard = DO::internal::Boundary_guard<2>;
+  std::vector<std::array<std::uint32_t, 3>> cells;
+  for(auto f : mesh.faces()) {
+    std::array<std::uint32_t, 3> t;
+    int i = 0;
+    for(Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[i++] = std::uint32_t(v);
+    cells.push_back(t);
+  }
+  std::vector<DO::internal::Vector<2>> x;
+  for(Vertex v : mesh.vertices()) x.emplace_back(uv[v].x(), uv[v].y());
+  return Guard(Guard::boundary_faces(cells), x.size(), DO::internal::connected_pieces(cells, x.size())).is_injective(x);
+}
+
+// Also where boundary vertices slide on a triangle surface (the source's own boundary): a vertex
+// projected onto the closest point of another part of that surface would cross it (hostile round
+// 9: two blocks 1/4096 apart overlapped). On the unit sphere positive cells suffice: a map of the
+// sphere onto itself without folds is one-to-one.
 template <class Run>
 DO::Result with_boundary_guard(const Command_line& c, const Run& run)
 {
-  if(c.fix == "boundary") return run(false);
+  if(c.fix == "boundary" && !(c.slides() && c.start != "ball")) return run(false);
   try {
     return run(true);
   } catch(const DO::Crossing_start_boundary& guarded) {
@@ -429,6 +452,7 @@ int run_triangles(const Command_line& c)
   output.cells = source.cells;
   if(c.subdivide > 0) {
     // The source and the optimized map refined together (paper 4.3); the source goes to its own file.
+    const bool injective = r.inverted_cells == 0 && is_globally_injective(mesh, uv);
     DO::subdivide_map(mesh, uv, static_cast<unsigned>(c.subdivide),
                       c.scheme == "loop" ? DO::Subdivision_scheme::LOOP : DO::Subdivision_scheme::LINEAR);
     DO::IO::Triangle_soup refined;
@@ -453,6 +477,11 @@ int run_triangles(const Command_line& c)
                               (c.scheme == "loop" ? std::string("Loop's smoothing folds it; --scheme linear keeps the optimized map's cells")
                                                   : "rounded midpoints of nearly flat cells of the optimized map; a measure infinite "
                                                     "on flat cells keeps them away") + "); nothing written");
+    // Loop's border rule also moves the border: it may cross itself, or pieces overlap.
+    if(injective && refined_distortion.inverted_cells == 0 && !is_globally_injective(mesh, uv))
+      throw DO::Invalid_input("the subdivided map's border crosses itself or one of its pieces overlaps another (" +
+                              (c.scheme == "loop" ? std::string("Loop's smoothing moves the border; --scheme linear keeps the optimized map")
+                                                  : "rounded midpoints of borders closer than their rounding") + "); nothing written");
     DO::IO::write_triangle_soup(c.subdivided_source, refined);
     // The refined map's energy under --cell-weighting; its new vertices have no weights of their
     // own, so every vertex weighs 1 here.
@@ -701,15 +730,23 @@ int run_tetrahedra(const Command_line& c)
       // Sliding on the mesh's own boundary, the vertices on its sharp edges fixed.
       const auto sharp = DO::sharp_boundary_vertices(c3t3, target_map);
       auto kept = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) { return sharp.count(v) > 0 || get(fixed, v); });
-      return DO::improve_mesh_quality(c3t3, target_map, measure,
-        DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map),
-                                         common_parameters(run, weights).vertex_is_constrained_map(kept)));
+      const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, target_map);
+      return with_boundary_guard(c, [&](bool guard) {
+        return DO::improve_mesh_quality(c3t3, target_map, measure,
+          DO::parameters::sliding_boundary(surface, DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights))
+                                                      .vertex_is_constrained_map(kept)));
+      });
     }
     if(c.volume_mode() && c.slides()) {
-      const auto np = common_parameters(run, weights).vertex_is_constrained_map(fixed);
-      return c.start == "ball"
-        ? CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Sphere_surface(), np))
-        : CGAL::minimize_distortion(c3t3, target_map, measure, DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, target_map), np));
+      if(c.start == "ball")
+        return CGAL::minimize_distortion(c3t3, target_map, measure,
+          DO::parameters::sliding_boundary(DO::Sphere_surface(), common_parameters(run, weights).vertex_is_constrained_map(fixed)));
+      const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, target_map);
+      return with_boundary_guard(c, [&](bool guard) {
+        return CGAL::minimize_distortion(c3t3, target_map, measure,
+          DO::parameters::sliding_boundary(surface, DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights))
+                                                      .vertex_is_constrained_map(fixed)));
+      });
     }
     try {
       return with_boundary_guard(c, [&](bool guard) {

@@ -1557,6 +1557,39 @@ TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
     EXPECT_FALSE(std::ifstream(o1).good());
     EXPECT_FALSE(std::ifstream(s1).good());
   }
+  // Loop's border rule moves the reflex corner of an L into its notch, where a separate triangle
+  // lies 0.01 from it (hostile round 9): the refined pieces would overlap; status 1, nothing
+  // written. --scheme linear keeps the optimized map.
+  {
+    IO::Triangle_soup l_source, l_start;
+    const std::vector<std::array<double, 2>> corners = {{0, 0}, {1, 0}, {2, 0}, {0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}};
+    for(const auto& p : corners) l_source.points.push_back({p[0], p[1], 0});
+    l_start = l_source;
+    for(const auto& p : std::vector<std::array<double, 2>>{{1.01, 1.01}, {1.9, 1.01}, {1.01, 1.9}}) {
+      l_source.points.push_back({p[0] + 10, p[1], 0});
+      l_start.points.push_back({p[0], p[1], 0});
+    }
+    l_source.cells = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}, {8, 9, 10}};
+    l_start.cells = l_source.cells;
+    const std::string a = temp("sub_l.off"), b = temp("sub_l_start.off"), o1 = temp("sub_l_out.off"), s1 = temp("sub_l_source.off");
+    IO::write_triangle_soup(a, l_source);
+    IO::write_triangle_soup(b, l_start);
+    for(const std::string scheme : {"loop", "linear"}) {
+      std::remove(o1.c_str());
+      std::remove(s1.c_str());
+      const Tool_run l_run = run("--source " + a + " --target " + b + " --output " + o1 + " --fix none --measure symmetric_dirichlet "
+                                 "--subdivide 1 --subdivided-source " + s1 + " --scheme " + scheme);
+      if(scheme == "loop") {
+        EXPECT_EQ(l_run.status, 1) << l_run.output;
+        EXPECT_NE(l_run.output.find("the subdivided map's border crosses itself or one of its pieces overlaps another (Loop's"),
+                  std::string::npos) << l_run.output;
+        EXPECT_FALSE(std::ifstream(o1).good());
+        EXPECT_FALSE(std::ifstream(s1).good());
+      } else {
+        EXPECT_EQ(l_run.status, 0) << l_run.output;
+      }
+    }
+  }
   for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
         {" --subdivide 1", "go together"},
         {" --subdivide 0 --subdivided-source " + s2, "--subdivide expects 1 to 6 levels"},

@@ -19,7 +19,8 @@
 // imply injectivity; pieces apart can still come to lie one inside another without any crossing.
 // Given the pieces (per-vertex labels), is_injective() also asks whether a boundary component of
 // one piece lies inside another, by the parity of a ray's crossings with that piece's boundary
-// (one vertex per component is enough: components that do not cross are inside or outside whole).
+// (one vertex per component is enough: components that do not cross are inside or outside whole;
+// boxes keep the tests to the faces near each ray).
 // A move of v changes its piece's image only by the simplices its ring's faces sweep (the
 // triangles (old v, new v, w) in 2D, the tetrahedra (old v, new v, w1, w2) in 3D: their sum is the
 // difference of the new and old stars as chains), so accepts_move() refuses a move whose swept
@@ -249,8 +250,8 @@ public:
     if(!injective || !several_pieces()) return injective;
     const std::pair<std::uint32_t, std::uint32_t> nested = nested_pieces(target);
     if(nested.first == nested.second) return true;
-    for(std::uint32_t p : {nested.first, nested.second})
-      for(std::size_t i = piece_first_face_[p]; i < piece_first_face_[p + 1]; ++i) report(piece_faces_[i]);
+    for(std::uint32_t f = 0; f < faces_.size(); ++f)
+      if(face_piece_[f] == nested.first || face_piece_[f] == nested.second) report(f);
     return false;
   }
 
@@ -278,12 +279,11 @@ private:
   bool keeps_clearance_ = false;
   std::vector<std::int32_t> stack_;          // scratch of accepts_move()
   std::vector<Box> ring_boxes_;
-  // With several pieces (all empty otherwise): per face its piece (0, 1, ...), the faces of each
-  // piece, per boundary component (faces joined by vertices) one vertex, and the positions of the
-  // last rebuild() or commit_move(), where accepts_move()'s sweeps start.
+  // With several pieces (all empty otherwise): per face its piece (0, 1, ...), per boundary
+  // component (faces joined by vertices) one vertex, and the positions of the last rebuild() or
+  // commit_move(), where accepts_move()'s sweeps start.
   std::vector<std::uint32_t> face_piece_;
-  std::vector<std::size_t> piece_first_face_;   // faces of p: piece_faces_[piece_first_face_[p], piece_first_face_[p + 1])
-  std::vector<std::uint32_t> piece_faces_;
+  std::uint32_t pieces_ = 0;
   std::vector<std::uint32_t> components_;
   std::vector<Vector<n>> committed_;
   std::vector<std::array<Vector<n>, n + 1>> swept_;   // scratch of accepts_move()
@@ -304,12 +304,7 @@ private:
       face_piece_.clear();
       return;
     }
-    piece_first_face_.assign(pieces + 1, 0);
-    for(std::uint32_t p : face_piece_) ++piece_first_face_[p + 1];
-    std::partial_sum(piece_first_face_.begin(), piece_first_face_.end(), piece_first_face_.begin());
-    piece_faces_.resize(faces_.size());
-    std::vector<std::size_t> next(piece_first_face_.begin(), piece_first_face_.end() - 1);
-    for(std::uint32_t f = 0; f < faces_.size(); ++f) piece_faces_[next[face_piece_[f]]++] = f;
+    pieces_ = pieces;
     std::iota(root.begin(), root.end(), 0u);
     for(const Face& f : faces_)
       for(int i = 1; i < n; ++i) root[find_root(root, f[i])] = find_root(root, f[0]);
@@ -320,53 +315,86 @@ private:
   std::uint32_t piece_of(std::size_t v) const { return face_piece_[vertex_faces_[first_face_[v]]]; }
 
   // Two pieces, the first with a boundary component inside the second, or (0, 0). Assumes that no
-  // faces cross: a component is then inside or outside another piece whole.
+  // faces cross: a component is then inside or outside another piece whole. Boxes
+  // (CGAL::box_intersection_d) pair each component with the pieces whose box holds its vertex, then
+  // each such pair's ray, up to the piece's box, with the piece's faces it may meet.
   std::pair<std::uint32_t, std::uint32_t> nested_pieces(const std::vector<Vector<n>>& target) const
   {
-    const std::size_t pieces = piece_first_face_.size() - 1;
-    std::vector<Box> box(pieces);
-    for(std::uint32_t f = 0; f < faces_.size(); ++f) box[face_piece_[f]].extend(face_box(f, target));
-    for(std::uint32_t r : components_)
-      for(std::uint32_t q = 0; q < pieces; ++q)
-        if(q != piece_of(r) && box[q].contains(target[r]) && is_inside(target[r], q, target)) return {piece_of(r), q};
+    using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
+    const auto box_d = [](const Box& b, std::uint32_t info) {
+      double lo[n], hi[n];
+      for(int i = 0; i < n; ++i) lo[i] = b.min()[i], hi[i] = b.max()[i];
+      return Box_d(lo, hi, info);
+    };
+    std::vector<Box> piece_box(pieces_);
+    std::vector<Box_d> face_boxes, boxes, points;
+    face_boxes.reserve(faces_.size());
+    for(std::uint32_t f = 0; f < faces_.size(); ++f) {
+      const Box b = face_box(f, target);
+      piece_box[face_piece_[f]].extend(b);
+      face_boxes.push_back(box_d(b, f));
+    }
+    for(std::uint32_t q = 0; q < pieces_; ++q) boxes.push_back(box_d(piece_box[q], q));
+    for(std::uint32_t c = 0; c < components_.size(); ++c) points.push_back(box_d(Box(target[components_[c]]), c));
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;   // (component, another piece whose box holds it)
+    CGAL::box_intersection_d(points.begin(), points.end(), boxes.begin(), boxes.end(), [&](const Box_d& point, const Box_d& piece) {
+      if(piece.info() != piece_of(components_[point.info()])) pairs.emplace_back(point.info(), piece.info());
+    });
+    std::vector<Box_d> rays;
+    for(std::uint32_t k = 0; k < pairs.size(); ++k) {
+      Box ray(target[components_[pairs[k].first]]);
+      ray.max()[0] = piece_box[pairs[k].second].max()[0];
+      rays.push_back(box_d(ray, k));
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> hits;   // (pair, face of its piece)
+    CGAL::box_intersection_d(rays.begin(), rays.end(), face_boxes.begin(), face_boxes.end(), [&](const Box_d& ray, const Box_d& face) {
+      if(face_piece_[face.info()] == pairs[ray.info()].second) hits.emplace_back(ray.info(), face.info());
+    });
+    std::sort(hits.begin(), hits.end());
+    for(std::size_t i = 0, j; i < hits.size(); i = j) {
+      const auto [c, q] = pairs[hits[i].first];
+      int crossings = 0;
+      bool on = false;
+      for(j = i; j < hits.size() && hits[j].first == hits[i].first; ++j) {
+        const int x = ray_crossing(target[components_[c]], faces_[hits[j].second], target);
+        on = on || x == 2;
+        crossings += x == 1;
+      }
+      if(on || crossings % 2 == 1) return {piece_of(components_[c]), q};
+    }
     return {0, 0};
   }
 
-  // Whether x, on no face of piece q, is inside q's image: an odd number of q's faces cross the ray
-  // from x along +x, x raised by an infinitesimal (eps in y; in 3D, (eps, eps^2) in (y, z)) so that
-  // the ray meets no face's vertex or edge (Edelsbrunner and Muecke's simulation of simplicity).
-  // On a face (then the boundaries meet): inside.
-  bool is_inside(const Vector<n>& x, std::uint32_t q, const std::vector<Vector<n>>& t) const
+  // Whether the ray from x along +x crosses face f (1) or not (0), x raised by an infinitesimal (eps
+  // in y; in 3D, (eps, eps^2) in (y, z)) so that the ray meets no face's vertex or edge (Edelsbrunner
+  // and Muecke's simulation of simplicity); 2 when x lies on f. An odd number of crossings with a
+  // piece's faces: x inside it.
+  int ray_crossing(const Vector<n>& x, const Face& f, const std::vector<Vector<n>>& t) const
   {
-    bool inside = false;
-    for(std::size_t i = piece_first_face_[q]; i < piece_first_face_[q + 1]; ++i) {
-      const Face& f = faces_[piece_faces_[i]];
-      if constexpr(n == 2) {
-        const Vector<2>& a = t[f[0]];
-        const Vector<2>& b = t[f[1]];
-        if((a[1] <= x[1]) == (b[1] <= x[1])) continue;   // the raised ray passes above or below
-        const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), K::Point_2(x[0], x[1]));
-        if(o == CGAL::COLLINEAR) return true;
-        inside ^= (o == (b[1] > a[1] ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN));   // the face is ahead of x
-      } else {
-        const auto yz = [](const Vector<3>& p) { return K::Point_2(p[1], p[2]); };
-        const CGAL::Orientation s = CGAL::orientation(yz(t[f[0]]), yz(t[f[1]]), yz(t[f[2]]));
-        if(s == CGAL::COLLINEAR) continue;   // parallel to the ray: the raised ray misses it
-        // The side of the raised x from each projected edge: the terms of eps and eps^2 break ties.
-        const auto side = [&](const Vector<3>& a, const Vector<3>& b) {
-          const CGAL::Orientation o = CGAL::orientation(yz(a), yz(b), yz(x));
-          if(o != CGAL::COLLINEAR) return o;
-          if(a[2] != b[2]) return a[2] > b[2] ? CGAL::POSITIVE : CGAL::NEGATIVE;
-          return b[1] > a[1] ? CGAL::POSITIVE : CGAL::NEGATIVE;
-        };
-        if(side(t[f[0]], t[f[1]]) != s || side(t[f[1]], t[f[2]]) != s || side(t[f[2]], t[f[0]]) != s) continue;
-        // The ray meets the face's plane ahead of x iff x is on the side that +x leaves.
-        const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), point(f[2], t), K::Point_3(x[0], x[1], x[2]));
-        if(o == CGAL::COPLANAR) return true;
-        inside ^= (o == -s);
-      }
+    if constexpr(n == 2) {
+      const Vector<2>& a = t[f[0]];
+      const Vector<2>& b = t[f[1]];
+      if((a[1] <= x[1]) == (b[1] <= x[1])) return 0;   // the raised ray passes above or below
+      const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), K::Point_2(x[0], x[1]));
+      if(o == CGAL::COLLINEAR) return 2;
+      return o == (b[1] > a[1] ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN);   // the face is ahead of x
+    } else {
+      const auto yz = [](const Vector<3>& p) { return K::Point_2(p[1], p[2]); };
+      const CGAL::Orientation s = CGAL::orientation(yz(t[f[0]]), yz(t[f[1]]), yz(t[f[2]]));
+      if(s == CGAL::COLLINEAR) return 0;   // parallel to the ray: the raised ray misses it
+      // The side of the raised x from each projected edge: the terms of eps and eps^2 break ties.
+      const auto side = [&](const Vector<3>& a, const Vector<3>& b) {
+        const CGAL::Orientation o = CGAL::orientation(yz(a), yz(b), yz(x));
+        if(o != CGAL::COLLINEAR) return o;
+        if(a[2] != b[2]) return a[2] > b[2] ? CGAL::POSITIVE : CGAL::NEGATIVE;
+        return b[1] > a[1] ? CGAL::POSITIVE : CGAL::NEGATIVE;
+      };
+      if(side(t[f[0]], t[f[1]]) != s || side(t[f[1]], t[f[2]]) != s || side(t[f[2]], t[f[0]]) != s) return 0;
+      // The ray meets the face's plane ahead of x iff x is on the side that +x leaves.
+      const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), point(f[2], t), K::Point_3(x[0], x[1], x[2]));
+      if(o == CGAL::COPLANAR) return 2;
+      return o == -s;
     }
-    return inside;
   }
 
   // Whether the simplices the ring of v sweeps from committed_[v] to target[v] hold no boundary

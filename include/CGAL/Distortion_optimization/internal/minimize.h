@@ -25,6 +25,8 @@
 #include <CGAL/Distortion_optimization/internal/optimizer_state.h>
 #include <CGAL/Distortion_optimization/internal/partitioned_sweep.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -150,29 +152,54 @@ private:
 };
 
 // Throws unless something holds the map's size where the measure decreases as the map shrinks
-// (Dirichlet, or a sum or product with it): then its infimum is the map collapsed onto its
-// constrained vertices, every cell flat, and a run ends near that unless at least n + 1 vertices
-// are constrained or some slide on a surface. Per piece of the mesh (joined by no vertex): a piece
-// with nothing held collapses alone.
+// (Dirichlet, or a sum or product with it): then its infimum is the map collapsed onto the affine
+// hull of its constrained vertices, every cell flat, and a run ends near that unless n + 1 of them
+// are affinely independent (exact predicates) or some vertex slides on a surface. Per piece of the
+// mesh (joined by no vertex): a piece with nothing held collapses alone.
 template <int n, class Measure>
 void check_size_is_held(const Optimization_problem<n>& problem, const Measure& measure)
 {
   if(!(measure.template value<n>(Singular_values<n>::Constant(0.5)) < value_on_rigid_maps<n>(measure))) return;
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const auto& x = problem.map.target;
+  const auto point = [&](std::uint32_t v) {
+    if constexpr(n == 2) return K::Point_2(x[v][0], x[v][1]);
+    else return K::Point_3(x[v][0], x[v][1], x[v][2]);
+  };
+  // Whether v is off the affine hull of s (k points, affinely independent).
+  const auto independent = [&](const std::array<std::uint32_t, n + 1>& s, int k, std::uint32_t v) {
+    if(k == 0) return true;
+    if(k == 1) return x[v] != x[s[0]];
+    if constexpr(n == 2) return CGAL::orientation(point(s[0]), point(s[1]), point(v)) != CGAL::COLLINEAR;
+    else return k == 2 ? !CGAL::collinear(point(s[0]), point(s[1]), point(v))
+                       : CGAL::orientation(point(s[0]), point(s[1]), point(s[2]), point(v)) != CGAL::COPLANAR;
+  };
   const std::vector<std::uint32_t> piece = connected_pieces(problem.map.cells, problem.number_of_vertices());
-  std::vector<std::size_t> held(piece.size(), 0);   // per piece's root: constrained vertices, n + 1 if one slides
-  for(std::size_t v = 0; v < piece.size(); ++v) held[piece[v]] += problem.slides(v) ? n + 1 : !problem.is_free[v];
+  // Per piece's root: its constrained vertices, and up to n + 1 of them affinely independent (n + 1
+  // where one slides: its surface holds the size).
+  std::vector<std::size_t> constrained(piece.size(), 0);
+  std::vector<std::array<std::uint32_t, n + 1>> span(piece.size());
+  std::vector<int> rank(piece.size(), 0);
+  for(std::uint32_t v = 0; v < piece.size(); ++v) {
+    const std::uint32_t r = piece[v];
+    if(problem.slides(v)) rank[r] = n + 1;
+    if(problem.is_free[v]) continue;
+    ++constrained[r];
+    if(rank[r] <= n && independent(span[r], rank[r], v)) span[r][rank[r]++] = v;
+  }
   const auto& cells = problem.map.cells;
-  const auto weak = std::find_if(cells.begin(), cells.end(), [&](const auto& c) { return held[piece[c[0]]] <= n; });
+  const auto weak = std::find_if(cells.begin(), cells.end(), [&](const auto& c) { return rank[piece[c[0]]] <= n; });
   if(weak == cells.end()) return;
-  const std::size_t constrained = held[piece[(*weak)[0]]];
+  const std::size_t k = constrained[piece[(*weak)[0]]];
   const bool one_piece = std::all_of(cells.begin(), cells.end(), [&](const auto& c) { return piece[c[0]] == piece[cells[0][0]]; });
+  const std::string hull = n == 2 ? "on one line" : "in one plane";
   throw Invalid_input("the measure " + measure.name() + " decreases as the map shrinks, and " +
                       (one_piece ? std::string() : "in the piece of the mesh with cell " + std::to_string(weak - cells.begin()) + " ") +
-                      (constrained == 0 ? std::string("no vertex is") : "only " + std::to_string(constrained) +
-                       (constrained == 1 ? " vertex is" : " vertices are")) +
-                      " constrained: its minimum collapses " + (one_piece ? "the map" : "that piece") +
-                      " (every cell flat); constrain at least " + std::to_string(n + 1) + " vertices" +
-                      (one_piece ? "" : " of each piece") + ", e.g. the boundary");
+                      (k == 0 ? std::string("no vertex is constrained")
+                       : k <= n ? "only " + std::to_string(k) + (k == 1 ? " vertex is" : " vertices are") + " constrained"
+                                : "the " + std::to_string(k) + " constrained vertices lie " + hull) +
+                      ": its minimum collapses " + (one_piece ? "the map" : "that piece") + " (every cell flat); constrain at least " +
+                      std::to_string(n + 1) + " vertices not " + hull + (one_piece ? "" : " in each piece") + ", e.g. the boundary");
 }
 
 // Minimizes in place the target positions of problem.map; throws Invalid_input for a start the

@@ -117,16 +117,8 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
   if(loop.size() != boundary_edges || !(perimeter > 0)) return false;   // more than one loop
   // One piece: every vertex joined to the loop (a disk beside a closed surface passes the counts
   // above, and the closed one would be collapsed).
-  std::vector<unsigned char> reached(nv, 0);
-  std::vector<std::uint32_t> stack(loop);
-  for(std::uint32_t v : loop) reached[v] = 1;
-  while(!stack.empty()) {
-    const std::uint32_t v = stack.back();
-    stack.pop_back();
-    for(std::uint32_t w : neighbours[v])
-      if(!reached[w]) reached[w] = 1, stack.push_back(w);
-  }
-  if(std::find(reached.begin(), reached.end(), 0) != reached.end()) return false;
+  const std::vector<std::uint32_t> piece = connected_pieces(p.map.cells, nv);
+  if(std::any_of(piece.begin(), piece.end(), [&](std::uint32_t r) { return r != piece[loop[0]]; })) return false;
 
   // More than three constrained vertices: the boundary's, exactly, on a convex polygon.
   const bool onto_targets = constrained.size() > 3;
