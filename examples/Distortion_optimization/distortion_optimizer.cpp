@@ -140,35 +140,30 @@ void check_same_cells(const std::string& name, const Points& source_points, cons
       throw DO::Invalid_input(name + ": " + cell + " " + std::to_string(k) + " differs from the source's (same connectivity needed)");
 }
 
-// Free-boundary mode (some border vertex free): the run keeps the boundary from crossing itself
-// (global injectivity). A start whose boundary already crosses itself cannot be guarded: then the
-// run goes on without the guard, with a warning.
-// Whether a planar map with no inverted cell is globally injective: its border crosses itself
-// nowhere and no piece lies inside another (the boundary guard's exact test).
+// Whether a planar map (the mesh's vertices, uv; its faces, cells) with no inverted cell is globally
+// injective: its border crosses itself nowhere and no piece lies inside another (the boundary
+// guard's exact test).
 template <class UV>
-bool is_globally_injective(const Mesh& mesh, const UV& uv)
+bool is_globally_injective(const Mesh& mesh, const UV& uv, const std::vector<std::array<std::size_t, 3>>& cells)
 {
   using Guard = DO::internal::Boundary_guard<2>;
-  std::vector<std::array<std::uint32_t, 3>> cells;
-  for(auto f : mesh.faces()) {
-    std::array<std::uint32_t, 3> t;
-    int i = 0;
-    for(Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[i++] = std::uint32_t(v);
-    cells.push_back(t);
-  }
+  std::vector<std::array<std::uint32_t, 3>> faces;
+  for(const auto& t : cells) faces.push_back({std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
   std::vector<DO::internal::Vector<2>> x;
   for(Vertex v : mesh.vertices()) x.emplace_back(uv[v].x(), uv[v].y());
-  return Guard(Guard::boundary_faces(cells), x.size(), DO::internal::connected_pieces(cells, x.size())).is_injective(x);
+  return Guard(Guard::boundary_faces(faces), x.size(), DO::internal::connected_pieces(faces, x.size())).is_injective(x);
 }
 
-// Also where boundary vertices slide on a triangle surface (the source's own boundary): a vertex
-// projected onto the closest point of another part of that surface would cross it (hostile round
-// 9: two blocks 1/4096 apart overlapped). On the unit sphere positive cells suffice: a map of the
-// sphere onto itself without folds is one-to-one.
+// Free-boundary mode (some border vertex free), and boundary vertices sliding on a triangle surface
+// (the source's own boundary, where a vertex projected onto the closest point of another part of it
+// would cross it; hostile round 9: two blocks 1/4096 apart overlapped): the run keeps the boundary
+// from crossing itself (global injectivity). A start whose boundary already crosses itself cannot
+// be guarded: then the run goes on without the guard, with a warning. (Sliding on the unit sphere
+// does not come here: a map of the sphere onto itself without folds is one-to-one.)
 template <class Run>
 DO::Result with_boundary_guard(const Command_line& c, const Run& run)
 {
-  if(c.fix == "boundary" && !(c.slides() && c.start != "ball")) return run(false);
+  if(c.fix == "boundary" && !c.slides()) return run(false);
   try {
     return run(true);
   } catch(const DO::Crossing_start_boundary& guarded) {
@@ -452,7 +447,7 @@ int run_triangles(const Command_line& c)
   output.cells = source.cells;
   if(c.subdivide > 0) {
     // The source and the optimized map refined together (paper 4.3); the source goes to its own file.
-    const bool injective = r.inverted_cells == 0 && is_globally_injective(mesh, uv);
+    const bool injective = r.inverted_cells == 0 && is_globally_injective(mesh, uv, source.cells);
     DO::subdivide_map(mesh, uv, static_cast<unsigned>(c.subdivide),
                       c.scheme == "loop" ? DO::Subdivision_scheme::LOOP : DO::Subdivision_scheme::LINEAR);
     DO::IO::Triangle_soup refined;
@@ -478,7 +473,7 @@ int run_triangles(const Command_line& c)
                                                   : "rounded midpoints of nearly flat cells of the optimized map; a measure infinite "
                                                     "on flat cells keeps them away") + "); nothing written");
     // Loop's border rule also moves the border: it may cross itself, or pieces overlap.
-    if(injective && refined_distortion.inverted_cells == 0 && !is_globally_injective(mesh, uv))
+    if(injective && refined_distortion.inverted_cells == 0 && !is_globally_injective(mesh, uv, refined.cells))
       throw DO::Invalid_input("the subdivided map's border crosses itself or one of its pieces overlaps another (" +
                               (c.scheme == "loop" ? std::string("Loop's smoothing moves the border; --scheme linear keeps the optimized map")
                                                   : "rounded midpoints of borders closer than their rounding") + "); nothing written");

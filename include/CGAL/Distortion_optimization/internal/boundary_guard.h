@@ -215,7 +215,6 @@ public:
   bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr,
                     double clearance_fraction = 0) const
   {
-    using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
     if(crossing) crossing->clear();
     const auto report = [&](std::uint32_t f) {
       if(crossing) crossing->insert(crossing->end(), faces_[f].begin(), faces_[f].end());
@@ -232,11 +231,8 @@ public:
         if(!crossing) return false;
         continue;
       }
-      Box b = face_box(f, target);
-      b = grown(b, clearance_fraction * clearance(b));
-      double lo[n], hi[n];
-      for(int i = 0; i < n; ++i) { lo[i] = b.min()[i]; hi[i] = b.max()[i]; }
-      boxes.emplace_back(lo, hi, f);
+      const Box b = face_box(f, target);
+      boxes.push_back(box_d(grown(b, clearance_fraction * clearance(b)), f));
     }
     // A callback cannot stop box_self_intersection_d: without `crossing`, it skips the tests once
     // one crossing is found.
@@ -260,6 +256,7 @@ public:
 
 private:
   using Box = Eigen::AlignedBox<double, n>;
+  using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;   // box_intersection_d's
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   struct Node
   {
@@ -320,12 +317,6 @@ private:
   // each such pair's ray, up to the piece's box, with the piece's faces it may meet.
   std::pair<std::uint32_t, std::uint32_t> nested_pieces(const std::vector<Vector<n>>& target) const
   {
-    using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;
-    const auto box_d = [](const Box& b, std::uint32_t info) {
-      double lo[n], hi[n];
-      for(int i = 0; i < n; ++i) lo[i] = b.min()[i], hi[i] = b.max()[i];
-      return Box_d(lo, hi, info);
-    };
     std::vector<Box> piece_box(pieces_);
     std::vector<Box_d> face_boxes, boxes, points;
     face_boxes.reserve(faces_.size());
@@ -375,7 +366,7 @@ private:
       const Vector<2>& a = t[f[0]];
       const Vector<2>& b = t[f[1]];
       if((a[1] <= x[1]) == (b[1] <= x[1])) return 0;   // the raised ray passes above or below
-      const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), K::Point_2(x[0], x[1]));
+      const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), point(x));
       if(o == CGAL::COLLINEAR) return 2;
       return o == (b[1] > a[1] ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN);   // the face is ahead of x
     } else {
@@ -391,7 +382,7 @@ private:
       };
       if(side(t[f[0]], t[f[1]]) != s || side(t[f[1]], t[f[2]]) != s || side(t[f[2]], t[f[0]]) != s) return 0;
       // The ray meets the face's plane ahead of x iff x is on the side that +x leaves.
-      const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), point(f[2], t), K::Point_3(x[0], x[1], x[2]));
+      const CGAL::Orientation o = CGAL::orientation(point(f[0], t), point(f[1], t), point(f[2], t), point(x));
       if(o == CGAL::COPLANAR) return 2;
       return o == -s;
     }
@@ -401,8 +392,7 @@ private:
   // vertex of another piece (closed simplices).
   bool sweeps_no_other_piece(std::size_t v, const std::vector<Vector<n>>& target)
   {
-    std::vector<std::array<Vector<n>, n + 1>>& swept = swept_;
-    swept.clear();
+    swept_.clear();
     Box region;
     for(std::size_t i = first_face_[v]; i < first_face_[v + 1]; ++i) {
       std::array<Vector<n>, n + 1> s;
@@ -411,14 +401,14 @@ private:
       for(int j = 0, k = 2; j < n; ++j)
         if(faces_[vertex_faces_[i]][j] != v) s[k++] = target[faces_[vertex_faces_[i]][j]];
       for(const Vector<n>& p : s) region.extend(p);
-      swept.push_back(s);
+      swept_.push_back(s);
     }
     const std::uint32_t own = piece_of(v);
     return visit(region, [&](std::uint32_t g) {
       if(face_piece_[g] == own) return true;
       for(std::uint32_t u : faces_[g])
         if(region.contains(target[u]))
-          for(const auto& s : swept)
+          for(const auto& s : swept_)
             if(in_closed_simplex(s, target[u])) return false;
       return true;
     });
@@ -427,24 +417,20 @@ private:
   // Whether x is in the closed convex hull of the n + 1 points of s (exact).
   static bool in_closed_simplex(const std::array<Vector<n>, n + 1>& s, const Vector<n>& x)
   {
-    const auto p = [](const Vector<n>& y) {
-      if constexpr(n == 2) return K::Point_2(y[0], y[1]);
-      else return K::Point_3(y[0], y[1], y[2]);
-    };
     if constexpr(n == 2) {
-      const CGAL::Orientation o = CGAL::orientation(p(s[0]), p(s[1]), p(s[2]));
+      const CGAL::Orientation o = CGAL::orientation(point(s[0]), point(s[1]), point(s[2]));
       if(o != CGAL::COLLINEAR) {
         for(int i = 0; i < 3; ++i)
-          if(CGAL::orientation(p(s[i]), p(s[(i + 1) % 3]), p(x)) == -o) return false;
+          if(CGAL::orientation(point(s[i]), point(s[(i + 1) % 3]), point(x)) == -o) return false;
         return true;
       }
     } else {
-      const CGAL::Orientation o = CGAL::orientation(p(s[0]), p(s[1]), p(s[2]), p(s[3]));
+      const CGAL::Orientation o = CGAL::orientation(point(s[0]), point(s[1]), point(s[2]), point(s[3]));
       if(o != CGAL::COPLANAR) {
         for(int i = 0; i < 4; ++i) {
           std::array<Vector<n>, 4> r = s;
           r[i] = x;
-          if(CGAL::orientation(p(r[0]), p(r[1]), p(r[2]), p(r[3])) == -o) return false;
+          if(CGAL::orientation(point(r[0]), point(r[1]), point(r[2]), point(r[3])) == -o) return false;
         }
         return true;
       }
@@ -453,13 +439,13 @@ private:
       for(int skip = 0; skip < 4 && !in; ++skip) {
         std::array<K::Point_3, 3> tri;
         for(int j = 0, k = 0; j < 4; ++j)
-          if(j != skip) tri[k++] = p(s[j]);
+          if(j != skip) tri[k++] = point(s[j]);
         if(CGAL::collinear(tri[0], tri[1], tri[2])) continue;
-        if(!flat && CGAL::orientation(tri[0], tri[1], tri[2], p(x)) != CGAL::COPLANAR) return false;
+        if(!flat && CGAL::orientation(tri[0], tri[1], tri[2], point(x)) != CGAL::COPLANAR) return false;
         flat = true;
-        in = CGAL::coplanar_orientation(tri[0], tri[1], tri[2], p(x)) != CGAL::NEGATIVE &&
-             CGAL::coplanar_orientation(tri[1], tri[2], tri[0], p(x)) != CGAL::NEGATIVE &&
-             CGAL::coplanar_orientation(tri[2], tri[0], tri[1], p(x)) != CGAL::NEGATIVE;
+        in = CGAL::coplanar_orientation(tri[0], tri[1], tri[2], point(x)) != CGAL::NEGATIVE &&
+             CGAL::coplanar_orientation(tri[1], tri[2], tri[0], point(x)) != CGAL::NEGATIVE &&
+             CGAL::coplanar_orientation(tri[2], tri[0], tri[1], point(x)) != CGAL::NEGATIVE;
       }
       if(flat) return in;
     }
@@ -471,7 +457,14 @@ private:
       if(other == 0 && s[i] != s[0]) other = i;
     }
     if(other == 0) return x == s[0];
-    return hull.contains(x) && CGAL::collinear(p(s[0]), p(s[other]), p(x));
+    return hull.contains(x) && CGAL::collinear(point(s[0]), point(s[other]), point(x));
+  }
+
+  static Box_d box_d(const Box& b, std::uint32_t info)
+  {
+    double lo[n], hi[n];
+    for(int i = 0; i < n; ++i) lo[i] = b.min()[i], hi[i] = b.max()[i];
+    return Box_d(lo, hi, info);
   }
 
   Box face_box(std::uint32_t f, const std::vector<Vector<n>>& target) const
@@ -556,11 +549,12 @@ private:
     return true;
   }
 
-  auto point(std::uint32_t v, const std::vector<Vector<n>>& t) const
+  static auto point(const Vector<n>& x)
   {
-    if constexpr(n == 2) return K::Point_2(t[v][0], t[v][1]);
-    else return K::Point_3(t[v][0], t[v][1], t[v][2]);
+    if constexpr(n == 2) return K::Point_2(x[0], x[1]);
+    else return K::Point_3(x[0], x[1], x[2]);
   }
+  static auto point(std::uint32_t v, const std::vector<Vector<n>>& t) { return point(t[v]); }
 
   // A face with coincident (2D) or collinear (3D) vertices: its cell is degenerate, so no injectivity.
   bool is_degenerate(std::uint32_t f, const std::vector<Vector<n>>& t) const
