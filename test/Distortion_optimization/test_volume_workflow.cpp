@@ -26,6 +26,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -38,6 +39,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -417,6 +419,53 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   expect_invalid([&] { DO::mesh_interior(flat); }, "the volume is thinner (2 volume / area = 1");
   expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9)); }, "more than 10^7");
   EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);
+}
+
+// A surface in several components is meshed as the volume they bound, each component included.
+// Mesh_3 finds the surface from its initial points (rays from the centre of the bounding box, or
+// the protecting balls of sharp edges): a small sphere beside a larger one or beside a cube, or an
+// island in a hollow ball, once got no tetrahedron at all.
+TEST(VolumeWorkflow, EveryComponentIsMeshed)
+{
+  DEMO_SURFACE(sphere, "sphere.off");   // radius 0.5 about the origin
+  const auto placed = [](Surface s, double factor, const K::Vector_3& shift) {
+    for(auto v : s.vertices()) s.point(v) = CGAL::ORIGIN + factor * (s.point(v) - CGAL::ORIGIN) + shift;
+    return s;
+  };
+  const K::Vector_3 zero(0, 0, 0);
+  struct Case
+  {
+    std::vector<Surface> parts;
+    std::function<int(const Point&)> region;   // which expected volume a cell's centroid counts to
+    std::vector<double> volumes, areas;   // of each region's part of the surface
+  };
+  const auto volume = [](const Surface& s) { return DO::interior_mesh_sizes(s).volume; };
+  const auto area = [](const Surface& s) { return DO::interior_mesh_sizes(s).area; };
+  const Surface big = placed(sphere, 3, zero), small = placed(sphere, 1, {2.5, 0, 0});
+  const Surface cube = triangulated_cube(), beside = placed(sphere, 0.5, {2, 0.5, 0.5});
+  const Surface outer = placed(sphere, 4, zero), cavity = placed(sphere, 3, zero), island = placed(sphere, 1, zero);
+  const std::vector<Case> cases = {
+    {{big, small}, [](const Point& p) { return p.x() < 2 ? 0 : 1; }, {volume(big), volume(small)}, {area(big), area(small)}},
+    {{cube, beside}, [](const Point& p) { return p.x() < 1.5 ? 0 : 1; }, {1., volume(beside)}, {6., area(beside)}},
+    {{outer, cavity, island}, [](const Point& p) { return CGAL::squared_distance(p, Point(0, 0, 0)) < 1 ? 1 : 0; },
+     {volume(outer) - volume(cavity), volume(island)}, {area(outer) + area(cavity), area(island)}}};
+  for(std::size_t k = 0; k < cases.size(); ++k) {
+    Surface joined;
+    for(const Surface& part : cases[k].parts) CGAL::copy_face_graph(part, joined);
+    const C3t3 c3t3 = DO::mesh_interior(joined);
+    const double facet_distance = DO::interior_mesh_sizes(joined).facet_distance;
+    std::vector<double> meshed(cases[k].volumes.size(), 0.);
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+      const Point p[4] = {position(c3t3, c, 0), position(c3t3, c, 1), position(c3t3, c, 2), position(c3t3, c, 3)};
+      meshed[cases[k].region(CGAL::centroid(p[0], p[1], p[2], p[3]))] += CGAL::volume(p[0], p[1], p[2], p[3]);
+    }
+    // A boundary within the facet distance of the surface bounds about the same volume, to its area
+    // times that distance (the small spheres lose 3-5%: the sizes are the whole surface's).
+    for(std::size_t i = 0; i < meshed.size(); ++i)
+      EXPECT_NEAR(meshed[i], cases[k].volumes[i], cases[k].areas[i] * facet_distance) << "case " << k << ", part " << i;
+    EXPECT_EQ(non_positive_cells(c3t3), 0u) << k;
+    EXPECT_LE(check_boundary_on_surface(c3t3, joined, facet_distance), 1.) << k;
+  }
 }
 
 // Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes

@@ -11,9 +11,10 @@
 //      that any input, at any scale, gives about the same number of tetrahedra;
 //   3. domain: Polyhedral_mesh_domain_with_features_3 on the copy, sharp edges detected and
 //      protected (a smooth surface has none);
-//   4. Delaunay refinement (make_mesh_3) with a seeded random generator, then the optional
-//      optimizers (ODT, Lloyd, perturbation, exudation) without time limits: the output depends
-//      only on the input and the parameters.
+//   4. Delaunay refinement (make_mesh_3) with a seeded random generator; a component of the
+//      surface that Mesh_3's initial points missed gets seeds of its own and the refinement goes on
+//      (refine_mesh_3); then the optional optimizers (ODT, Lloyd, perturbation, exudation) without
+//      time limits: the output depends only on the input and the parameters.
 // Mesh_3 runs on a copy scaled by a power of two to unit size, and its complex is scaled back:
 // Mesh_3 has absolute tolerances (it crashed on a surface 2^-60 in size and hung at 2^-40), and
 // an exact scaling makes the mesh of a scaled surface the scaled mesh. A surface far from the
@@ -27,12 +28,17 @@
 #include <CGAL/Distortion_optimization/number_types.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -44,7 +50,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/make_mesh_3.h>
+#include <CGAL/make_mesh_3.h>      // before the optimizers' headers, which miss some of its includes
+#include <CGAL/refine_mesh_3.h>    // refine_mesh_3 and Mesh_3's optimizers
 
 #include <algorithm>
 #include <array>
@@ -198,6 +205,7 @@ struct Checked_surface
   using Triangle = std::array<std::size_t, 3>;
 
   Surface surface;   // the input moved by -offset, then scaled by `scale`
+  std::vector<std::size_t> face_names;   // the input's index of each face of `surface`
   double scale = 1;
   std::array<double, 3> offset = {0, 0, 0};
   double volume = 0; // of the input, unscaled
@@ -268,6 +276,7 @@ struct Checked_surface
       std::size_t k = 0;
       for(auto h : halfedges_around_face(halfedge(f, tm), tm)) t[k++] = compact[get(vertex_index, target(h, tm))];
       triangles.push_back(t);
+      face_names.push_back(get(face_index, f));
     }
     // Half extents: a surface from -2^1023 to 2^1023 has an extent of 2^1024, beyond doubles.
     const Bbox_3 box = bbox_3(points.begin(), points.end());
@@ -418,6 +427,72 @@ void map_complex_back(C3T3& c3t3, double factor, const std::array<double, 3>& of
                           "to its coordinates' precision, are no longer all positively oriented; move it nearer to the origin");
 }
 
+// Mesh_3 finds the surface from its initial points, the hits of rays cast from the centre of the
+// bounding box, or, where sharp edges are protected, only from the protecting balls; it then refines
+// around the facets they make. A component of the surface that none of them reaches (a small sphere
+// beside a large one or beside a cube, an island in a hollow ball) gets no facet and no tetrahedron.
+// Returns, for each component of `surface` (the domain's) on which no boundary facet of `c3t3` lies,
+// points of it with their indices in `domain`: where short segments across its faces that lie
+// outermost along +-x, +-y, +-z and +-(1, 1, 1) meet the surface; `missed` gets the index of one
+// face of each such component.
+template <class C3T3, class Domain, class Surface>
+std::vector<std::pair<typename Domain::Point_3, typename Domain::Index>>
+seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface& surface, std::vector<std::size_t>& missed)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Point_3 = typename Domain::Point_3;
+  using K = typename Kernel_traits<Point_3>::Kernel;
+  using Vector_3 = typename K::Vector_3;
+  using Face = typename boost::graph_traits<Surface>::face_descriptor;
+  std::vector<std::pair<Point_3, typename Domain::Index>> seeds;
+  missed.clear();
+  std::vector<std::size_t> component(num_faces(surface));
+  const std::size_t count = PMP::connected_components(surface, CGAL::make_property_map(component));
+  if(count < 2) return seeds;
+
+  // A facet of the complex lies on the component of the face nearest to its first vertex.
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Surface>>>;
+  const Tree tree(faces(surface).first, faces(surface).second, surface);
+  std::vector<bool> meshed(count, false);
+  const auto point = c3t3.triangulation().geom_traits().construct_point_3_object();
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    meshed[component[tree.closest_point_and_primitive(point(f->first->vertex((f->second + 1) % 4)->point())).second]] = true;
+
+  const Vector_3 directions[8] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {1, 1, 1}, {-1, -1, -1}};
+  std::vector<std::array<Face, 8>> outermost(count);
+  std::vector<std::array<double, 8>> extent(count);
+  for(auto& e : extent) e.fill(-std::numeric_limits<double>::infinity());
+  const auto centroid = [&](Face f) {
+    const auto h = halfedge(f, surface);
+    return CGAL::centroid(surface.point(source(h, surface)), surface.point(target(h, surface)),
+                          surface.point(target(next(h, surface), surface)));
+  };
+  for(Face f : faces(surface)) {
+    const std::size_t c = component[f];
+    if(meshed[c]) continue;
+    if(extent[c][0] == -std::numeric_limits<double>::infinity()) missed.push_back(std::size_t(f));   // its first face
+    const Vector_3 m = centroid(f) - CGAL::ORIGIN;
+    for(int d = 0; d < 8; ++d) {
+      const double along = CGAL::to_double(m * directions[d]);
+      if(along > extent[c][d]) { extent[c][d] = along; outermost[c][d] = f; }
+    }
+  }
+  const auto intersection = domain.construct_intersection_object();
+  for(std::size_t c = 0; c < count; ++c) {
+    if(meshed[c]) continue;
+    for(int d = 0; d < 8; ++d) {
+      const Face f = outermost[c][d];
+      if(d > 0 && std::find(outermost[c].begin(), outermost[c].begin() + d, f) != outermost[c].begin() + d) continue;
+      // Across the face at its centroid, a hundredth of its size to each side.
+      const Vector_3 across = 0.01 * std::sqrt(CGAL::to_double(PMP::face_area(f, surface))) * PMP::compute_face_normal(f, surface);
+      const Point_3 middle = centroid(f);
+      const auto hit = intersection(typename K::Segment_3(middle - across, middle + across));
+      if(std::get<2>(hit) != 0) seeds.emplace_back(std::get<0>(hit), std::get<1>(hit));
+    }
+  }
+  return seeds;
+}
+
 template <class NamedParameters>
 using Interior_mesh_traits_of = typename CGAL::internal_np::Lookup_named_param_def<
   CGAL::internal_np::geom_traits_t, NamedParameters, CGAL::Exact_predicates_inexact_constructions_kernel>::type;
@@ -552,7 +627,10 @@ where `surface` has sharp edges, its boundary keeps them (a cube keeps its 8 cor
 edges). The result is what `map_vertices()`, `star_shaped_to_unit_ball()`, `harmonic_map()`,
 `CGAL::compute_distortion()` and `CGAL::minimize_distortion()` take. `surface` is not modified;
 its orientation does not matter; several components (disjoint or nested, e.g. a hollow ball)
-are meshed as the volume they bound. Two runs with the same input give the same complex (the
+are meshed as the volume they bound, every one of them: Mesh_3 finds the surface from rays cast
+from the centre of the bounding box and from the sharp edges, and a component that these miss (a
+small sphere beside a large one, an island in a hollow ball) is seeded with points of its own
+before the refinement resumes (`CGAL::refine_mesh_3()`). Two runs with the same input give the same complex (the
 random generator of Mesh_3 is seeded, the optimizers have no time limit).
 
 Defaults. Without sizes, the criteria scale with the enclosed volume V and the area A of the
@@ -722,7 +800,8 @@ degenerate face or two faces that cross, encloses no volume, is thinner than the
 (its mean thickness, 2 volume / area, is smaller), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
-`maximum_number_of_vertices`, if the complex has no cell, or if the surface is so far from the
+`maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
+tetrahedron even when seeded (the error names one of its faces), or if the surface is so far from the
 origin for its size that a cell of the complex, its points rounded to the input's precision, is not
 positively oriented.
 */
@@ -788,21 +867,49 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                                           mp::facet_distance = s * sizes.facet_distance,
                                           mp::cell_radius_edge_ratio = sizes.cell_radius_edge_ratio,
                                           mp::cell_size = s * sizes.cell_size);
-  // time_limit = 0 means none: a time limit would make the output depend on the machine's speed
-  // (Mesh_3's default limit for perturbation and exudation is the refinement time).
-  const auto odt_options = odt > 0 ? mp::odt(mp::time_limit = 0, mp::max_iteration_number = odt) : mp::no_odt();
-  const auto lloyd_options = lloyd > 0 ? mp::lloyd(mp::time_limit = 0, mp::max_iteration_number = lloyd) : mp::no_lloyd();
-  const auto perturb_options = perturb ? mp::perturb(mp::time_limit = 0) : mp::no_perturb();
-  const auto exude_options = exude ? mp::exude(mp::time_limit = 0) : mp::no_exude();
   CGAL::Mesh_error_code error = CGAL::CGAL_MESH_3_NO_ERROR;
+  const auto options = mp::mesh_3_options(mp::maximal_number_of_vertices = maximum_vertices, mp::pointer_to_error_code = &error);
+  const auto check_error = [&] {
+    if(error == CGAL::CGAL_MESH_3_MAXIMAL_NUMBER_OF_VERTICES_REACHED)
+      throw Invalid_input("mesh_interior: Mesh_3 stopped at " + std::to_string(maximum_vertices) +
+                          " vertices (maximum_number_of_vertices): the surface has details far smaller than the "
+                          "sizes (thin parts, short sharp edges?); try a larger sharp_edge_angle (180 protects no "
+                          "edge) or a larger maximum");
+  };
   typename Types::C3T3 c3t3 = CGAL::make_mesh_3<typename Types::C3T3>(
-    domain, criteria, mp::features(domain), odt_options, lloyd_options, perturb_options, exude_options,
-    mp::mesh_3_options(mp::maximal_number_of_vertices = maximum_vertices, mp::pointer_to_error_code = &error));
-  if(error == CGAL::CGAL_MESH_3_MAXIMAL_NUMBER_OF_VERTICES_REACHED)
-    throw Invalid_input("mesh_interior: Mesh_3 stopped at " + std::to_string(maximum_vertices) +
-                        " vertices (maximum_number_of_vertices): the surface has details far smaller than the "
-                        "sizes (thin parts, short sharp edges?); try a larger sharp_edge_angle (180 protects no "
-                        "edge) or a larger maximum");
+    domain, criteria, mp::features(domain), mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(), options);
+  check_error();
+  // Components that Mesh_3's initial points missed get seeds, and the refinement goes on from the
+  // whole triangulation: its facets and cells are classified again, as after a load.
+  std::vector<std::size_t> missed;
+  const auto seeds = internal::seeds_of_missed_components(c3t3, domain, checked.surface, missed);
+  if(!seeds.empty()) {
+    c3t3.clear_cells_and_facets_from_c3t3();
+    auto& tr = c3t3.triangulation();
+    const auto weighted = tr.geom_traits().construct_weighted_point_3_object();
+    for(const auto& [p, index] : seeds) {
+      const auto v = tr.insert(weighted(p));
+      if(v != typename Types::Triangulation::Vertex_handle()) {   // null when a protecting ball hides p
+        c3t3.set_dimension(v, 2);
+        c3t3.set_index(v, index);
+      }
+    }
+    CGAL::refine_mesh_3(c3t3, domain, criteria, mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(),
+                        mp::no_reset_c3t3(), options);
+    check_error();
+    internal::seeds_of_missed_components(c3t3, domain, checked.surface, missed);
+  }
+  if(!missed.empty())
+    throw Invalid_input("mesh_interior: Mesh_3 left the component of the surface with face " +
+                        std::to_string(checked.face_names[missed.front()]) +
+                        " without tetrahedra (is it much smaller than the sizes?); give smaller sizes");
+  // The optimizers as make_mesh_3 runs them, in its order. time_limit = 0 means none: a time limit
+  // would make the output depend on the machine's speed (Mesh_3's default limit for perturbation
+  // and exudation is the refinement time).
+  if(odt > 0) CGAL::odt_optimize_mesh_3(c3t3, domain, mp::time_limit = 0, mp::max_iteration_number = odt);
+  if(lloyd > 0) CGAL::lloyd_optimize_mesh_3(c3t3, domain, mp::time_limit = 0, mp::max_iteration_number = lloyd);
+  if(perturb) CGAL::perturb_mesh_3(c3t3, domain, mp::time_limit = 0);
+  if(exude) CGAL::exude_mesh_3(c3t3, mp::time_limit = 0);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw Invalid_input("mesh_interior: Mesh_3 produced no tetrahedron inside the surface (sizes too large "
                         "for the volume?)");
