@@ -466,6 +466,15 @@ TEST(VolumeWorkflow, EveryComponentIsMeshed)
     EXPECT_EQ(non_positive_cells(c3t3), 0u) << k;
     EXPECT_LE(check_boundary_on_surface(c3t3, joined, facet_distance), 1.) << k;
   }
+  // A component thinner than the facet distance is refused, as a thin surface alone is: a flat
+  // tetrahedron beside the sphere once got no tetrahedron, and a sphere of radius 1e-12 or a thin
+  // plate beside it kept Mesh_3 going without end.
+  Surface flat = big;
+  CGAL::make_tetrahedron(Point(2, 0, 0), Point(2.5, 0, 0), Point(2, 0.5, 0), Point(2.1, 0.1, 0.01), flat);
+  expect_invalid([&] { DO::mesh_interior(flat); }, "the component of the surface with face 320 is thinner (2 volume / area = 0.00");
+  Surface speck = big;
+  CGAL::copy_face_graph(placed(sphere, 2e-12, {2, 0, 0}), speck);
+  expect_invalid([&] { DO::mesh_interior(speck); }, "the component of the surface with face 320 is thinner");
 }
 
 // Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes

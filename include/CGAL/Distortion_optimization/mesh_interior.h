@@ -206,6 +206,8 @@ struct Checked_surface
 
   Surface surface;   // the input moved by -offset, then scaled by `scale`
   std::vector<std::size_t> face_names;   // the input's index of each face of `surface`
+  std::vector<std::size_t> component;    // the connected component of each face of `surface`
+  std::vector<double> component_volume, component_area;   // unscaled; a cavity's volume is negative
   double scale = 1;
   std::array<double, 3> offset = {0, 0, 0};
   double volume = 0; // of the input, unscaled
@@ -315,10 +317,20 @@ struct Checked_surface
         u[k] = (CGAL::to_double(points[i][k]) / 2 - (box.min_coord(k) / 2 + box.max_coord(k) / 2) / 2) / half_extent;
       return u;
     };
-    double unit_volume = 0;
-    for(const Triangle& t : triangles) {
+    component.resize(triangles.size());
+    const std::size_t components = PMP::connected_components(surface, CGAL::make_property_map(component));
+    std::vector<double> unit_volumes(components, 0.);
+    component_area.assign(components, 0.);
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      const Triangle& t = triangles[i];
       const auto a = unit(t[0]), b = unit(t[1]), c = unit(t[2]);
-      unit_volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+      unit_volumes[component[i]] += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+      component_area[component[i]] += CGAL::to_double(PMP::face_area(typename Surface::Face_index(i), surface)) / scale / scale;
+    }
+    double unit_volume = 0;
+    for(double v : unit_volumes) {
+      unit_volume += v;
+      component_volume.push_back(v * (2 * half_extent) * (2 * half_extent) * (2 * half_extent));
     }
     if(!(unit_volume > 0) || !std::isfinite(unit_volume))
       throw Invalid_input("mesh_interior: the surface encloses no volume");
@@ -431,13 +443,15 @@ void map_complex_back(C3T3& c3t3, double factor, const std::array<double, 3>& of
 // bounding box, or, where sharp edges are protected, only from the protecting balls; it then refines
 // around the facets they make. A component of the surface that none of them reaches (a small sphere
 // beside a large one or beside a cube, an island in a hollow ball) gets no facet and no tetrahedron.
-// Returns, for each component of `surface` (the domain's) on which no boundary facet of `c3t3` lies,
+// Returns, for each component of `surface` (the domain's; `component` numbers them per face) that
+// bounds no tetrahedron of `c3t3` (no boundary facet of it has a cell of the complex on a side),
 // points of it with their indices in `domain`: where short segments across its faces that lie
 // outermost along +-x, +-y, +-z and +-(1, 1, 1) meet the surface; `missed` gets the index of one
 // face of each such component.
 template <class C3T3, class Domain, class Surface>
 std::vector<std::pair<typename Domain::Point_3, typename Domain::Index>>
-seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface& surface, std::vector<std::size_t>& missed)
+seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface& surface,
+                           const std::vector<std::size_t>& component, std::vector<std::size_t>& missed)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using Point_3 = typename Domain::Point_3;
@@ -446,17 +460,18 @@ seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface
   using Face = typename boost::graph_traits<Surface>::face_descriptor;
   std::vector<std::pair<Point_3, typename Domain::Index>> seeds;
   missed.clear();
-  std::vector<std::size_t> component(num_faces(surface));
-  const std::size_t count = PMP::connected_components(surface, CGAL::make_property_map(component));
+  const std::size_t count = component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
   if(count < 2) return seeds;
 
-  // A facet of the complex lies on the component of the face nearest to its first vertex.
+  // A facet of the complex lies on the component of the face nearest to its first vertex. A facet
+  // with no cell of the complex on either side bounds nothing (the two sides of a flat component).
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Surface>>>;
   const Tree tree(faces(surface).first, faces(surface).second, surface);
   std::vector<bool> meshed(count, false);
   const auto point = c3t3.triangulation().geom_traits().construct_point_3_object();
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
-    meshed[component[tree.closest_point_and_primitive(point(f->first->vertex((f->second + 1) % 4)->point())).second]] = true;
+    if(c3t3.is_in_complex(f->first) || c3t3.is_in_complex(f->first->neighbor(f->second)))
+      meshed[component[tree.closest_point_and_primitive(point(f->first->vertex((f->second + 1) % 4)->point())).second]] = true;
 
   const Vector_3 directions[8] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {1, 1, 1}, {-1, -1, -1}};
   std::vector<std::array<Face, 8>> outermost(count);
@@ -797,7 +812,8 @@ h / 10.
 \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
 that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
 degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
-(its mean thickness, 2 volume / area, is smaller), if a size is not a positive finite
+(its mean thickness, 2 volume / area, is smaller) or has a component that is (2 |volume| / area
+of that component; the error names one of its faces), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
@@ -842,6 +858,20 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
     throw Invalid_input(std::string("mesh_interior: ") + text + ": Mesh_3 would not recover its boundary; give sizes "
                         "below its thickness (facet distance, facet size, cell size)");
   }
+  // So is each component (a cavity measured by the space it encloses): a thin plate beside a ball
+  // kept Mesh_3's protection of its rim going, a sphere of radius 1e-12 beside a unit one its
+  // refinement, and a flat tetrahedron got no tetrahedron at all.
+  const std::size_t components = checked.component_volume.size();
+  for(std::size_t c = 0; c < components && components > 1; ++c) {
+    const double t = 2 * std::abs(checked.component_volume[c]) / checked.component_area[c];
+    if(t >= sizes.facet_distance) continue;
+    const std::size_t face = std::find(checked.component.begin(), checked.component.end(), c) - checked.component.begin();
+    char text[200];
+    std::snprintf(text, sizeof text, "is thinner (2 volume / area = %.3g) than the facet distance (%.3g)", t, sizes.facet_distance);
+    throw Invalid_input("mesh_interior: the component of the surface with face " + std::to_string(checked.face_names[face]) +
+                        " " + text + ": Mesh_3 would not recover it; give sizes below its thickness (facet distance, "
+                        "facet size, cell size), or remove it");
+  }
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +
                        checked.area / (D::area_per_facet * sizes.facet_size * sizes.facet_size) / 2;
   const auto given_maximum = get_parameter(np, internal_np::maximum_number_of_vertices);
@@ -882,7 +912,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   // Components that Mesh_3's initial points missed get seeds, and the refinement goes on from the
   // whole triangulation: its facets and cells are classified again, as after a load.
   std::vector<std::size_t> missed;
-  const auto seeds = internal::seeds_of_missed_components(c3t3, domain, checked.surface, missed);
+  const auto seeds = internal::seeds_of_missed_components(c3t3, domain, checked.surface, checked.component, missed);
   if(!seeds.empty()) {
     c3t3.clear_cells_and_facets_from_c3t3();
     auto& tr = c3t3.triangulation();
@@ -897,7 +927,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
     CGAL::refine_mesh_3(c3t3, domain, criteria, mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(),
                         mp::no_reset_c3t3(), options);
     check_error();
-    internal::seeds_of_missed_components(c3t3, domain, checked.surface, missed);
+    internal::seeds_of_missed_components(c3t3, domain, checked.surface, checked.component, missed);
   }
   if(!missed.empty())
     throw Invalid_input("mesh_interior: Mesh_3 left the component of the surface with face " +
