@@ -345,8 +345,10 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
     problem.map.target = start_targets;
     // (The count may exceed the start's: a round may flip valid cells on its way.)
     const bool constrained = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end();
+    const bool slides = std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; });
     const std::string why = constrained ? "the descent found no injective map within the constraints, which may admit none "
                                           "(e.g. a fixed boundary that crosses itself)"
+                          : slides ? "the boundary slides on its surface, and the descent found no injective map with it there"
                           : 2 * report.inverted_before > problem.map.number_of_cells()
                             ? "no vertex is constrained, and the start inverts most cells: it may be a mirror image (reflect it)"
                             : "no vertex is constrained, yet the descent found no injective map";
