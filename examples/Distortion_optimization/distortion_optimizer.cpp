@@ -580,6 +580,7 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     std::string what = e.what();
     for(const auto& [library, tool] : {std::pair<std::string, std::string>("; give larger sizes", "; give a larger --cell-size"),
                                        {"; give sizes below its thickness", "; give a --cell-size below 10 times its thickness"},
+                                       {"; give sizes below their distance", "; give a --cell-size below 10 times their distance"},
                                        {"; try a larger sharp_edge_angle", "; give a smaller --cell-size"},
                                        {"; give smaller sizes", "; give a smaller --cell-size"}})
       if(const auto remedy = what.find(library); remedy != std::string::npos) what = what.substr(0, remedy) + tool;

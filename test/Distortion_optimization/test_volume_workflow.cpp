@@ -475,6 +475,11 @@ TEST(VolumeWorkflow, EveryComponentIsMeshed)
   Surface speck = big;
   CGAL::copy_face_graph(placed(sphere, 2e-12, {2, 0, 0}), speck);
   expect_invalid([&] { DO::mesh_interior(speck); }, "the component of the surface with face 320 is thinner");
+  // So are components closer than the facet distance (two cubes 10^-3 apart grew Mesh_3's edge
+  // protection without end); the cube and the sphere beside it above were 0.75 apart.
+  Surface pair = cube;
+  CGAL::copy_face_graph(placed(cube, 1, {1.001, 0, 0}), pair);
+  expect_invalid([&] { DO::mesh_interior(pair); }, "faces 0 and 12 of two components of the surface are 0.001 apart, less than the facet distance");
 }
 
 // Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes

@@ -50,6 +50,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/make_mesh_3.h>      // before the optimizers' headers, which miss some of its includes
 #include <CGAL/refine_mesh_3.h>    // refine_mesh_3 and Mesh_3's optimizers
 
@@ -508,6 +509,53 @@ seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface
   return seeds;
 }
 
+// Two faces of different components of `surface` (numbered per face by `component`) closer than
+// `distance` (the lowest pair of the closest), and how close they are; `distance` as the distance
+// when there are none. Candidates
+// are the pairs whose boxes, grown by `distance`, overlap (CGAL::box_self_intersection_d); two
+// triangles that do not cross are as close as the closest of their vertex-triangle and edge-edge
+// pairs.
+template <class Surface>
+std::tuple<std::size_t, std::size_t, double>
+closest_components(const Surface& surface, const std::vector<std::size_t>& component, double distance)
+{
+  using K = typename Kernel_traits<typename Surface::Point>::Kernel;
+  using Face = typename Surface::Face_index;
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  const auto corners = [&](Face f) {
+    std::array<typename K::Point_3, 3> p;
+    std::size_t k = 0;
+    for(auto v : vertices_around_face(halfedge(f, surface), surface)) p[k++] = surface.point(v);
+    return p;
+  };
+  std::vector<Box> boxes;
+  for(Face f : faces(surface)) {
+    const auto p = corners(f);
+    const Bbox_3 b = p[0].bbox() + p[1].bbox() + p[2].bbox();
+    boxes.emplace_back(Bbox_3(b.xmin() - distance, b.ymin() - distance, b.zmin() - distance, b.xmax() + distance,
+                              b.ymax() + distance, b.zmax() + distance), std::size_t(f));
+  }
+  std::tuple<std::size_t, std::size_t, double> closest(0, 0, distance);
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+    if(component[a.info()] == component[b.info()]) return;
+    const auto p = corners(Face(a.info())), q = corners(Face(b.info()));
+    const typename K::Triangle_3 tp(p[0], p[1], p[2]), tq(q[0], q[1], q[2]);
+    double d2 = std::numeric_limits<double>::infinity();
+    for(int i = 0; i < 3; ++i) {
+      d2 = (std::min)({d2, CGAL::to_double(CGAL::squared_distance(p[i], tq)), CGAL::to_double(CGAL::squared_distance(q[i], tp))});
+      for(int j = 0; j < 3; ++j)
+        d2 = (std::min)(d2, CGAL::to_double(CGAL::squared_distance(typename K::Segment_3(p[i], p[(i + 1) % 3]),
+                                                                    typename K::Segment_3(q[j], q[(j + 1) % 3]))));
+    }
+    // The lowest pair among equally close ones: the error does not depend on the order of the calls.
+    const std::tuple<std::size_t, std::size_t, double> pair((std::min)(a.info(), b.info()), (std::max)(a.info(), b.info()), std::sqrt(d2));
+    if(std::get<2>(pair) < std::get<2>(closest) ||
+       (std::get<2>(pair) == std::get<2>(closest) && std::get<2>(pair) < distance && pair < closest))
+      closest = pair;
+  });
+  return closest;
+}
+
 template <class NamedParameters>
 using Interior_mesh_traits_of = typename CGAL::internal_np::Lookup_named_param_def<
   CGAL::internal_np::geom_traits_t, NamedParameters, CGAL::Exact_predicates_inexact_constructions_kernel>::type;
@@ -813,7 +861,8 @@ h / 10.
 that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
 degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
 (its mean thickness, 2 volume / area, is smaller) or has a component that is (2 |volume| / area
-of that component; the error names one of its faces), if a size is not a positive finite
+of that component; the error names one of its faces), has two components closer than the facet
+distance (the error names a face of each), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
@@ -871,6 +920,21 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
     throw Invalid_input("mesh_interior: the component of the surface with face " + std::to_string(checked.face_names[face]) +
                         " " + text + ": Mesh_3 would not recover it; give sizes below its thickness (facet distance, "
                         "facet size, cell size), or remove it");
+  }
+  // Components closer than the facet distance: Mesh_3's boundary, within that distance of the
+  // surface, need not keep them apart. Two cubes 10^-3 apart (facet distance 0.014) grew its edge
+  // protection's memory without end; 10^-2 apart gave a complex that is not a manifold.
+  if(components > 1) {
+    const double scaled = checked.scale * sizes.facet_distance;   // in the units of the copy
+    const auto [f, g, d] = internal::closest_components(checked.surface, checked.component, scaled);
+    if(d < scaled) {
+      char text[200];
+      std::snprintf(text, sizeof text, " are %.3g apart, less than the facet distance (%.3g)", d / checked.scale, sizes.facet_distance);
+      throw Invalid_input("mesh_interior: faces " + std::to_string(checked.face_names[f]) + " and " +
+                          std::to_string(checked.face_names[g]) + " of two components of the surface" + text +
+                          ": Mesh_3 would not keep them apart; give sizes below their distance (facet distance, "
+                          "facet size, cell size), or move them apart");
+    }
   }
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +
                        checked.area / (D::area_per_facet * sizes.facet_size * sizes.facet_size) / 2;
