@@ -322,12 +322,16 @@ struct Checked_surface
     const std::size_t components = PMP::connected_components(surface, CGAL::make_property_map(component));
     std::vector<double> unit_volumes(components, 0.);
     component_area.assign(components, 0.);
+    double scaled_area = 0;   // PMP::area(surface), summed in its order
     for(std::size_t i = 0; i < triangles.size(); ++i) {
       const Triangle& t = triangles[i];
       const auto a = unit(t[0]), b = unit(t[1]), c = unit(t[2]);
       unit_volumes[component[i]] += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
-      component_area[component[i]] += CGAL::to_double(PMP::face_area(typename Surface::Face_index(i), surface)) / scale / scale;
+      const double face_area = CGAL::to_double(PMP::face_area(typename Surface::Face_index(i), surface));
+      scaled_area += face_area;
+      component_area[component[i]] += face_area;
     }
+    for(double& a : component_area) a = a / scale / scale;
     double unit_volume = 0;
     for(double v : unit_volumes) {
       unit_volume += v;
@@ -336,7 +340,7 @@ struct Checked_surface
     if(!(unit_volume > 0) || !std::isfinite(unit_volume))
       throw Invalid_input("mesh_interior: the surface encloses no volume");
     volume = unit_volume * (2 * half_extent) * (2 * half_extent) * (2 * half_extent);
-    area = CGAL::to_double(PMP::area(surface)) / scale / scale;
+    area = scaled_area / scale / scale;
     if(!(volume > 0) || !std::isfinite(volume) || !(area > 0) || !std::isfinite(area))
     {
       char size[32];
@@ -440,6 +444,16 @@ void map_complex_back(C3T3& c3t3, double factor, const std::array<double, 3>& of
                           "to its coordinates' precision, are no longer all positively oriented; move it nearer to the origin");
 }
 
+// The three corners of face f of `surface` (a Surface_mesh of triangles).
+template <class Surface>
+std::array<typename Surface::Point, 3> corners(const Surface& surface, typename Surface::Face_index f)
+{
+  std::array<typename Surface::Point, 3> p;
+  std::size_t k = 0;
+  for(auto v : vertices_around_face(halfedge(f, surface), surface)) p[k++] = surface.point(v);
+  return p;
+}
+
 // Mesh_3 finds the surface from its initial points, the hits of rays cast from the centre of the
 // bounding box, or, where sharp edges are protected, only from the protecting balls; it then refines
 // around the facets they make. A component of the surface that none of them reaches (a small sphere
@@ -479,9 +493,8 @@ seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface
   std::vector<std::array<double, 8>> extent(count);
   for(auto& e : extent) e.fill(-std::numeric_limits<double>::infinity());
   const auto centroid = [&](Face f) {
-    const auto h = halfedge(f, surface);
-    return CGAL::centroid(surface.point(source(h, surface)), surface.point(target(h, surface)),
-                          surface.point(target(next(h, surface), surface)));
+    const auto p = corners(surface, f);
+    return CGAL::centroid(p[0], p[1], p[2]);
   };
   for(Face f : faces(surface)) {
     const std::size_t c = component[f];
@@ -522,15 +535,9 @@ closest_components(const Surface& surface, const std::vector<std::size_t>& compo
   using K = typename Kernel_traits<typename Surface::Point>::Kernel;
   using Face = typename Surface::Face_index;
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
-  const auto corners = [&](Face f) {
-    std::array<typename K::Point_3, 3> p;
-    std::size_t k = 0;
-    for(auto v : vertices_around_face(halfedge(f, surface), surface)) p[k++] = surface.point(v);
-    return p;
-  };
   std::vector<Box> boxes;
   for(Face f : faces(surface)) {
-    const auto p = corners(f);
+    const auto p = corners(surface, f);
     const Bbox_3 b = p[0].bbox() + p[1].bbox() + p[2].bbox();
     boxes.emplace_back(Bbox_3(b.xmin() - distance, b.ymin() - distance, b.zmin() - distance, b.xmax() + distance,
                               b.ymax() + distance, b.zmax() + distance), std::size_t(f));
@@ -538,7 +545,7 @@ closest_components(const Surface& surface, const std::vector<std::size_t>& compo
   std::tuple<std::size_t, std::size_t, double> closest(0, 0, distance);
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
     if(component[a.info()] == component[b.info()]) return;
-    const auto p = corners(Face(a.info())), q = corners(Face(b.info()));
+    const auto p = corners(surface, Face(a.info())), q = corners(surface, Face(b.info()));
     const typename K::Triangle_3 tp(p[0], p[1], p[2]), tq(q[0], q[1], q[2]);
     double d2 = std::numeric_limits<double>::infinity();
     for(int i = 0; i < 3; ++i) {
@@ -899,28 +906,27 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   // A domain thinner than the facet distance (its mean thickness 2 V / A, the thickness of a slab)
   // passes Mesh_3's surface criteria with facets joining its two sides: the boundary is not
   // recovered, and the protection of its rim's edges does not end (a sphere squashed to 1e-9).
-  const double thickness = 2 * checked.volume / checked.area;
-  if(!(thickness >= sizes.facet_distance)) {
+  const auto check_thickness = [&](double volume, double area, const std::string& what, const std::string& lost,
+                                   const std::string& remedy) {
+    const double thickness = 2 * volume / area;
+    if(thickness >= sizes.facet_distance) return;
     char text[200];
-    std::snprintf(text, sizeof text, "the volume is thinner (2 volume / area = %.3g) than the facet distance (%.3g)",
-                  thickness, sizes.facet_distance);
-    throw Invalid_input(std::string("mesh_interior: ") + text + ": Mesh_3 would not recover its boundary; give sizes "
-                        "below its thickness (facet distance, facet size, cell size)");
-  }
+    std::snprintf(text, sizeof text, " is thinner (2 volume / area = %.3g) than the facet distance (%.3g)", thickness,
+                  sizes.facet_distance);
+    throw Invalid_input("mesh_interior: " + what + text + ": Mesh_3 would not recover " + lost +
+                        "; give sizes below its thickness (facet distance, facet size, cell size)" + remedy);
+  };
+  check_thickness(checked.volume, checked.area, "the volume", "its boundary", "");
   // So is each component (a cavity measured by the space it encloses): a thin plate beside a ball
   // kept Mesh_3's protection of its rim going, a sphere of radius 1e-12 beside a unit one its
   // refinement, and a flat tetrahedron got no tetrahedron at all.
   const std::size_t components = checked.component_volume.size();
-  for(std::size_t c = 0; c < components && components > 1; ++c) {
-    const double t = 2 * std::abs(checked.component_volume[c]) / checked.component_area[c];
-    if(t >= sizes.facet_distance) continue;
-    const std::size_t face = std::find(checked.component.begin(), checked.component.end(), c) - checked.component.begin();
-    char text[200];
-    std::snprintf(text, sizeof text, "is thinner (2 volume / area = %.3g) than the facet distance (%.3g)", t, sizes.facet_distance);
-    throw Invalid_input("mesh_interior: the component of the surface with face " + std::to_string(checked.face_names[face]) +
-                        " " + text + ": Mesh_3 would not recover it; give sizes below its thickness (facet distance, "
-                        "facet size, cell size), or remove it");
-  }
+  std::vector<std::size_t> first_face(components, 0);   // of each component, to name it
+  for(std::size_t f = checked.component.size(); f-- > 0;) first_face[checked.component[f]] = f;
+  for(std::size_t c = 0; c < components && components > 1; ++c)
+    check_thickness(std::abs(checked.component_volume[c]), checked.component_area[c],
+                    "the component of the surface with face " + std::to_string(checked.face_names[first_face[c]]), "it",
+                    ", or remove it");
   // Components closer than the facet distance: Mesh_3's boundary, within that distance of the
   // surface, need not keep them apart. Two cubes 10^-3 apart (facet distance 0.014) grew its edge
   // protection's memory without end; 10^-2 apart gave a complex that is not a manifold.
