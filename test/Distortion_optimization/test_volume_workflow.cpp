@@ -138,9 +138,10 @@ double diagonal(const Surface& s)
 }
 
 // The boundary of the complex against the input surface: its vertices on the surface (up to
-// rounding), the circumcentres of its facets within `facet_distance` (Mesh_3's criterion, which
-// bounds their distance to a point of the surface). Returns the largest circumcentre distance
-// divided by facet_distance.
+// rounding); returns the largest distance from the surface of points of its facets (centroid,
+// edge midpoints) divided by `facet_distance`. Mesh_3's facets are within the facet distance (its
+// criterion bounds their circumcentres' distance); the facets that a peeled flat cap uncovers lie
+// up to the cap's thickness deeper, less than the facet distance again: callers expect <= 2.
 double check_boundary_on_surface(const C3t3& c3t3, const Surface& surface, double facet_distance)
 {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Surface>;
@@ -155,7 +156,8 @@ double check_boundary_on_surface(const C3t3& c3t3, const Surface& surface, doubl
       p[k] = position(c3t3, f->first, (f->second + 1 + k) % 4);
       EXPECT_LE(std::sqrt(tree.squared_distance(p[k])), tolerance);
     }
-    worst = (std::max)(worst, std::sqrt(tree.squared_distance(CGAL::circumcenter(p[0], p[1], p[2]))) / facet_distance);
+    for(const Point& q : {CGAL::centroid(p[0], p[1], p[2]), CGAL::midpoint(p[0], p[1]), CGAL::midpoint(p[1], p[2]), CGAL::midpoint(p[2], p[0])})
+      worst = (std::max)(worst, std::sqrt(tree.squared_distance(q)) / facet_distance);
   }
   EXPECT_GT(facets, 0u);
   return worst;
@@ -224,7 +226,7 @@ TEST(VolumeWorkflow, RealSurfaceGivesPositiveCellsWithTheBoundaryOnTheSurface)
   EXPECT_GT(c3t3.number_of_cells_in_complex(), 1500u);
   EXPECT_LT(c3t3.number_of_cells_in_complex(), 8000u);
   EXPECT_EQ(non_positive_cells(c3t3), 0u);
-  EXPECT_LE(check_boundary_on_surface(c3t3, blobby, sizes.facet_distance), 1.);
+  EXPECT_LE(check_boundary_on_surface(c3t3, blobby, sizes.facet_distance), 2.);
   EXPECT_NEAR(complex_volume(c3t3), defaults.volume, 0.05 * defaults.volume);
   // The input is untouched.
   ASSERT_EQ(blobby.number_of_vertices(), before.number_of_vertices());
@@ -297,7 +299,7 @@ TEST(VolumeWorkflow, CubeKeepsItsCornersAndEdges)
     if(v->in_dimension() == 0) corners.push_back(c3t3.triangulation().geom_traits().construct_point_3_object()(v->point()));
   EXPECT_EQ(corners.size(), 8u);
   for(auto v : cube.vertices()) EXPECT_NE(std::find(corners.begin(), corners.end(), cube.point(v)), corners.end()) << cube.point(v);
-  EXPECT_LE(check_boundary_on_surface(c3t3, cube, DO::interior_mesh_sizes(cube, DOP::cell_size(0.2)).facet_distance), 1.);
+  EXPECT_LE(check_boundary_on_surface(c3t3, cube, DO::interior_mesh_sizes(cube, DOP::cell_size(0.2)).facet_distance), 2.);
   // 180 degrees protects no edge: the corners are not kept as such.
   const C3t3 smooth = DO::mesh_interior(cube, DOP::cell_size(0.2, DOP::sharp_edge_angle(180.)));
   EXPECT_EQ(smooth.number_of_corners(), 0u);
@@ -464,7 +466,7 @@ TEST(VolumeWorkflow, EveryComponentIsMeshed)
     for(std::size_t i = 0; i < meshed.size(); ++i)
       EXPECT_NEAR(meshed[i], cases[k].volumes[i], cases[k].areas[i] * facet_distance) << "case " << k << ", part " << i;
     EXPECT_EQ(non_positive_cells(c3t3), 0u) << k;
-    EXPECT_LE(check_boundary_on_surface(c3t3, joined, facet_distance), 1.) << k;
+    EXPECT_LE(check_boundary_on_surface(c3t3, joined, facet_distance), 2.) << k;
   }
   // A component thinner than the facet distance is refused, as a thin surface alone is: a flat
   // tetrahedron beside the sphere once got no tetrahedron, and a sphere of radius 1e-12 or a thin
@@ -480,6 +482,57 @@ TEST(VolumeWorkflow, EveryComponentIsMeshed)
   Surface pair = cube;
   CGAL::copy_face_graph(placed(cube, 1, {1.001, 0, 0}), pair);
   expect_invalid([&] { DO::mesh_interior(pair); }, "faces 0 and 12 of two components of the surface are 0.001 apart, less than the facet distance");
+}
+
+// Mesh_3 left on blobby.off (default sizes) a flat cap: a cell with two boundary facets and its
+// four vertices on the surface, with a smallest dihedral angle of 0.08 degrees, which the radial
+// map turned over; with the boundary fixed, no optimization could undo it (the tool refused
+// --start radial on blobby, elephant, fandisk, eight and hand). Such caps are peeled: the cells
+// with all their vertices on the surface keep their orientation under the radial map, and the
+// boundary is still a 2-manifold on the surface.
+TEST(VolumeWorkflow, FlatCapsArePeeledSoThatTheRadialMapKeepsTheBoundaryCells)
+{
+  DEMO_SURFACE(blobby, "blobby.off");
+  const C3t3 c3t3 = DO::mesh_interior(blobby);
+  const DO::Interior_mesh_sizes sizes = DO::interior_mesh_sizes(blobby);
+  const auto boundary = test_complexes::boundary_vertices(c3t3);
+  Targets radial;
+  DO::radial_map(c3t3, Target_map(radial), DO::volume_centroid(c3t3));
+  std::size_t on_surface = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    bool all_on_surface = true;
+    for(int i = 0; i < 4; ++i) all_on_surface = all_on_surface && boundary.count(c->vertex(i)) > 0;
+    if(!all_on_surface) continue;
+    ++on_surface;
+    EXPECT_EQ(CGAL::orientation(radial.at(c->vertex(0)), radial.at(c->vertex(1)), radial.at(c->vertex(2)), radial.at(c->vertex(3))),
+              CGAL::POSITIVE);
+    double area = 0;
+    int facets = 0;
+    for(int i = 0; i < 4; ++i)
+      if(c3t3.is_in_complex(c, i)) {
+        ++facets;
+        area += std::sqrt(CGAL::squared_area(position(c3t3, c, (i + 1) % 4), position(c3t3, c, (i + 2) % 4), position(c3t3, c, (i + 3) % 4)));
+      }
+    const double volume = CGAL::volume(position(c3t3, c, 0), position(c3t3, c, 1), position(c3t3, c, 2), position(c3t3, c, 3));
+    if(facets == 2) {
+      EXPECT_GE(3 * volume, (std::min)(sizes.facet_distance, 0.1 * std::sqrt(area)) * area);
+    }
+  }
+  EXPECT_GT(on_surface, 0u);
+  EXPECT_EQ(non_positive_cells(c3t3), 0u);
+  EXPECT_EQ(DO::internal::non_manifold_boundary_vertex(c3t3), Tr::Vertex_handle());
+  EXPECT_LE(check_boundary_on_surface(c3t3, blobby, sizes.facet_distance), 2.);
+  EXPECT_NEAR(complex_volume(c3t3), sizes.volume, 0.02 * sizes.volume);
+}
+
+// Where Mesh_3's tetrahedra touch only along an edge or at a vertex (hand.off at the default
+// sizes: two fingertips' approximations meet), the complex is refused with the place and the
+// remedy rather than returned: no map of it is a map of a manifold volume.
+TEST(VolumeWorkflow, ComplexThatIsNotAManifoldIsRefused)
+{
+  DEMO_SURFACE(hand, "hand.off");
+  expect_invalid([&] { DO::mesh_interior(hand); }, "mesh_interior: Mesh_3's tetrahedra touch at the vertex (");
+  expect_invalid([&] { DO::mesh_interior(hand); }, ") without sharing a facet: their boundary is not a 2-manifold there");
 }
 
 // Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes

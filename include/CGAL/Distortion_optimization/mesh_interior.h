@@ -61,8 +61,11 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -522,6 +525,121 @@ seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface
   return seeds;
 }
 
+// Mesh_3 leaves a few flat caps on the surface: cells with two boundary facets and all four
+// vertices on the surface, their two other facets nearly in the same place (the two diagonals of
+// a nearly flat quadrilateral). They hold no volume, and a start map that bends the surface (the
+// radial map, the ball map) can turn one over with all its vertices fixed, where no optimization
+// can undo it (blobby, elephant, fandisk, eight and hand of libcgal-demo: one or two each, their
+// smallest dihedral angles 0.08 to 1.5 degrees). A cap thinner than `thickness` (3 volume / the
+// area A of its boundary facets; the facet distance: the surface stays as close) and than a tenth
+// of its width (sqrt(A): a regular tetrahedron's is 0.44, and a small cell across a sharp edge
+// stays) leaves the complex, its two inner facets becoming boundary facets, unless the edge they
+// share is already on the boundary (the surface would no longer be a manifold there). Repeated
+// while some cap goes: a peeled cap may uncover another. Returns the number of cells removed.
+template <class C3T3>
+std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
+{
+  using Cell_handle = typename C3T3::Triangulation::Cell_handle;
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  const auto& tr = c3t3.triangulation();
+  const auto point = tr.geom_traits().construct_point_3_object();
+  const auto area = [&](Cell_handle c, int i) {
+    return std::sqrt(CGAL::to_double(CGAL::squared_area(point(tr.point(c, (i + 1) % 4)), point(tr.point(c, (i + 2) % 4)),
+                                                        point(tr.point(c, (i + 3) % 4)))));
+  };
+  // Whether the edge (u, w) has a boundary facet.
+  const auto on_boundary = [&](Cell_handle c, int a, int b) {
+    auto f = tr.incident_facets(typename C3T3::Triangulation::Edge(c, a, b)), end = f;
+    do {
+      if(c3t3.is_in_complex(*f)) return true;
+    } while(++f != end);
+    return false;
+  };
+  std::size_t peeled = 0;
+  for(bool more = true; more;) {
+    more = false;
+    std::unordered_set<Vertex_handle> surface_vertex;
+    for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+      for(int i = 1; i < 4; ++i) surface_vertex.insert(f->first->vertex((f->second + i) % 4));
+    std::vector<Cell_handle> caps;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+      int facets = 0;
+      for(int i = 0; i < 4; ++i) facets += c3t3.is_in_complex(c, i) ? 1 : 0;
+      if(facets != 2) continue;
+      bool all_on_surface = true;
+      for(int i = 0; i < 4 && all_on_surface; ++i) all_on_surface = surface_vertex.count(c->vertex(i)) > 0;
+      if(!all_on_surface) continue;
+      double boundary_area = 0;
+      for(int i = 0; i < 4; ++i)
+        if(c3t3.is_in_complex(c, i)) boundary_area += area(c, i);
+      const double volume = std::abs(CGAL::to_double(CGAL::volume(point(tr.point(c, 0)), point(tr.point(c, 1)),
+                                                                  point(tr.point(c, 2)), point(tr.point(c, 3)))));
+      if(3 * volume < (std::min)(thickness, 0.1 * std::sqrt(boundary_area)) * boundary_area) caps.push_back(c);
+    }
+    for(Cell_handle c : caps) {
+      // The vertices opposite the boundary facets span the edge that the inner facets share.
+      int opposite[2], k = 0, inner[2], m = 0;
+      for(int i = 0; i < 4; ++i) (c3t3.is_in_complex(c, i) ? opposite[k++] : inner[m++]) = i;
+      if(k != 2 || on_boundary(c, opposite[0], opposite[1])) continue;   // (an earlier peel may have changed it)
+      const auto patch = c3t3.surface_patch_index(c, opposite[0]);
+      c3t3.remove_from_complex(c);
+      for(int i : opposite) c3t3.remove_from_complex(c, i);
+      for(int i : inner) c3t3.add_to_complex(c, i, patch);
+      ++peeled;
+      more = true;
+    }
+  }
+  return peeled;
+}
+
+// A vertex of the complex's boundary near which the boundary is not a 2-manifold (an edge with
+// more than two boundary facets, or a vertex whose boundary facets make more than one fan: two
+// parts of the mesh touching there), the first in the order of the facets; null if none.
+template <class C3T3>
+typename C3T3::Triangulation::Vertex_handle non_manifold_boundary_vertex(const C3T3& c3t3)
+{
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  using Edge = std::pair<Vertex_handle, Vertex_handle>;
+  const auto edge = [](Vertex_handle a, Vertex_handle b) { return a < b ? Edge(a, b) : Edge(b, a); };
+  std::map<Edge, int> facets_at;   // looked up only: the order of the handles does not matter
+  std::unordered_map<Vertex_handle, std::vector<Edge>> link;   // each vertex's facets, by their opposite edges
+  std::vector<Vertex_handle> order;   // the boundary vertices, first seen first
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    Vertex_handle w[3];
+    for(int i = 0; i < 3; ++i) w[i] = f->first->vertex((f->second + 1 + i) % 4);
+    for(int i = 0; i < 3; ++i) {
+      ++facets_at[edge(w[i], w[(i + 1) % 3])];
+      auto& l = link[w[i]];
+      if(l.empty()) order.push_back(w[i]);
+      l.push_back(edge(w[(i + 1) % 3], w[(i + 2) % 3]));
+    }
+  }
+  for(const Vertex_handle v : order) {
+    const auto& l = link[v];
+    for(const Edge& e : l)
+      if(facets_at[edge(v, e.first)] != 2 || facets_at[edge(v, e.second)] != 2) return v;
+    // Every edge at v has two facets, so its link is a union of cycles: one, or v is pinched.
+    std::map<Vertex_handle, std::array<Vertex_handle, 2>> next;
+    for(const Edge& e : l) {
+      auto& a = next[e.first];
+      a[a[0] == Vertex_handle() ? 0 : 1] = e.second;
+      auto& b = next[e.second];
+      b[b[0] == Vertex_handle() ? 0 : 1] = e.first;
+    }
+    std::size_t walked = 0;
+    Vertex_handle previous = l.front().first, at = l.front().second;
+    do {
+      const auto& n = next[at];
+      const Vertex_handle after = n[0] == previous ? n[1] : n[0];
+      previous = at;
+      at = after;
+      ++walked;
+    } while(previous != l.front().first && walked <= l.size());
+    if(walked != l.size()) return v;
+  }
+  return Vertex_handle();
+}
+
 // Two faces of different components of `surface` (numbered per face by `component`) closer than
 // `distance` (the lowest pair of the closest), and how close they are; `distance` as the distance
 // when there are none. Candidates
@@ -700,7 +818,13 @@ its orientation does not matter; several components (disjoint or nested, e.g. a 
 are meshed as the volume they bound, every one of them: Mesh_3 finds the surface from rays cast
 from the centre of the bounding box and from the sharp edges, and a component that these miss (a
 small sphere beside a large one, an island in a hollow ball) is seeded with points of its own
-before the refinement resumes (`CGAL::refine_mesh_3()`). Two runs with the same input give the same complex (the
+before the refinement resumes (`CGAL::refine_mesh_3()`). Mesh_3 leaves a few flat caps on the surface: cells
+with two boundary facets and all four vertices on the surface, thinner than the facet distance
+and than a tenth of their width (smallest dihedral angles of 0.1 to 1.5 degrees), which hold no
+volume and which a start map that bends the surface (the radial map, the unit ball map) can turn
+over with every vertex on the boundary, where no optimization with a fixed boundary can undo it.
+They are removed from the complex, their two inner facets becoming boundary facets, less than the
+facet distance deeper (blobby.off: 35 of 2.7.10^4 cells). Two runs with the same input give the same complex (the
 random generator of Mesh_3 is seeded, the optimizers have no time limit).
 
 Defaults. Without sizes, the criteria scale with the enclosed volume V and the area A of the
@@ -712,7 +836,10 @@ self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.
 tetrahedra (median 2.7.10^4) in 0.1 to 6 s (median 0.4 s) on one core; the largest counts come
 from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
 with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
-(mpi_triang.off) stops at `maximum_number_of_vertices`. Sizes are in the units of the input, and
+(mpi_triang.off) stops at `maximum_number_of_vertices`. Nine of them (armadillo, cheese, dino,
+femur, hand, homer, rotor, rotor_small, triceratops) give tetrahedra that touch only along an
+edge or at a vertex at these sizes, and are refused (hand.off meshes with a cell size of 0.02:
+1.4.10^5 tetrahedra). Sizes are in the units of the input, and
 Mesh_3 runs on a copy scaled by a power of two to unit size: a surface of any size whose volume a
 `double` holds is meshed alike, and a surface scaled by a power of two gives exactly the scaled complex
 (points and weights). A surface far from the origin for its size (within \f$ [m, 2m] \f$ along an
@@ -873,9 +1000,11 @@ distance (the error names a face of each), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
-tetrahedron even when seeded (the error names one of its faces), or if the surface is so far from the
-origin for its size that a cell of the complex, its points rounded to the input's precision, is not
-positively oriented.
+tetrahedron even when seeded (the error names one of its faces), if the boundary of the complex
+is not a 2-manifold (tetrahedra that touch only along an edge or at a vertex, where parts of the
+surface are closer than the sizes: the error gives the place; smaller sizes are the remedy), or
+if the surface is so far from the origin for its size that a cell of the complex, its points
+rounded to the input's precision, is not positively oriented.
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 typename Interior_mesh<internal::Interior_mesh_traits_of<NamedParameters>>::C3T3
@@ -1010,10 +1139,19 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   if(lloyd > 0) CGAL::lloyd_optimize_mesh_3(c3t3, domain, mp::time_limit = 0, mp::max_iteration_number = lloyd);
   if(perturb) CGAL::perturb_mesh_3(c3t3, domain, mp::time_limit = 0);
   if(exude) CGAL::exude_mesh_3(c3t3, mp::time_limit = 0);
+  internal::peel_flat_caps(c3t3, s * sizes.facet_distance);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw Invalid_input("mesh_interior: Mesh_3 produced no tetrahedron inside the surface (sizes too large "
                         "for the volume?)");
   internal::map_complex_back(c3t3, 1 / s, checked.offset);
+  if(const auto v = internal::non_manifold_boundary_vertex(c3t3); v != typename Types::Triangulation::Vertex_handle()) {
+    const auto p = c3t3.triangulation().geom_traits().construct_point_3_object()(v->point());
+    char text[160];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    throw Invalid_input(std::string("mesh_interior: Mesh_3's tetrahedra touch at the vertex ") + text +
+                        " without sharing a facet: their boundary is not a 2-manifold there (parts of the surface closer "
+                        "than the sizes, or details finer than them); give smaller sizes");
+  }
   return c3t3;
 }
 
