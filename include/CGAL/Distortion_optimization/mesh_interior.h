@@ -525,6 +525,57 @@ seeds_of_missed_components(const C3T3& c3t3, const Domain& domain, const Surface
   return seeds;
 }
 
+// Whether facet i of cell c, in the complex, is on its boundary (the cell across is not).
+template <class C3T3>
+bool is_boundary_facet(const C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c, int i)
+{
+  return !c3t3.is_in_complex(c->neighbor(i));
+}
+
+// Takes cell c out of the complex (`in` false) or into it (`in` true, with the subdomain index
+// `subdomain`), and makes its facets follow: a facet between a cell of the complex and another
+// is a facet of the complex (a new one with the surface patch index `patch`), and no other.
+template <class C3T3>
+void set_in_complex(C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c, bool in,
+                    const typename C3T3::Subdomain_index& subdomain, const typename C3T3::Surface_patch_index& patch)
+{
+  if(in) c3t3.add_to_complex(c, subdomain);
+  else c3t3.remove_from_complex(c);
+  for(int i = 0; i < 4; ++i) {
+    const bool boundary = in != c3t3.is_in_complex(c->neighbor(i));
+    if(c3t3.is_in_complex(c, i) && !boundary) c3t3.remove_from_complex(c, i);
+    else if(!c3t3.is_in_complex(c, i) && boundary) c3t3.add_to_complex(c, i, patch);
+  }
+}
+
+// Makes the facets of the complex the boundary of its cells: Mesh_3's facets are those whose dual
+// Voronoi edge crosses the surface, and its cells those whose circumcentre is inside, which
+// disagree in a few places (dino.off: 176 edges of its facets have four or more). A facet added
+// takes the surface patch index of a facet of the complex that shares a cell with it, or else the
+// first facet's. Returns the number of facets added or removed.
+template <class C3T3>
+std::size_t match_facets_to_cells(C3T3& c3t3)
+{
+  using Facet = typename C3T3::Triangulation::Facet;
+  if(c3t3.number_of_facets_in_complex() == 0) return 0;
+  const auto first = *c3t3.facets_in_complex_begin();
+  const auto default_patch = c3t3.surface_patch_index(first.first, first.second);
+  std::vector<Facet> extra, missing;
+  for(auto f = c3t3.triangulation().finite_facets_begin(); f != c3t3.triangulation().finite_facets_end(); ++f) {
+    const bool boundary = c3t3.is_in_complex(f->first) != c3t3.is_in_complex(f->first->neighbor(f->second));
+    if(boundary != c3t3.is_in_complex(*f)) (boundary ? missing : extra).push_back(*f);
+  }
+  for(const Facet& f : extra) c3t3.remove_from_complex(f);
+  for(const Facet& f : missing) {
+    auto patch = default_patch;
+    for(const auto c : {f.first, f.first->neighbor(f.second)})
+      for(int i = 0; i < 4; ++i)
+        if(c3t3.is_in_complex(c, i)) patch = c3t3.surface_patch_index(c, i);
+    c3t3.add_to_complex(f, patch);
+  }
+  return extra.size() + missing.size();
+}
+
 // Mesh_3 leaves a few flat caps on the surface: cells with two boundary facets and all four
 // vertices on the surface, their two other facets nearly in the same place (the two diagonals of
 // a nearly flat quadrilateral). They hold no volume, and a start map that bends the surface (the
@@ -547,11 +598,11 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
     return std::sqrt(CGAL::to_double(CGAL::squared_area(point(tr.point(c, (i + 1) % 4)), point(tr.point(c, (i + 2) % 4)),
                                                         point(tr.point(c, (i + 3) % 4)))));
   };
-  // Whether the edge (u, w) has a boundary facet.
+  // Whether the edge (c, a, b) has a boundary facet.
   const auto on_boundary = [&](Cell_handle c, int a, int b) {
     auto f = tr.incident_facets(typename C3T3::Triangulation::Edge(c, a, b)), end = f;
     do {
-      if(c3t3.is_in_complex(*f)) return true;
+      if(c3t3.is_in_complex(f->first) != c3t3.is_in_complex(f->first->neighbor(f->second))) return true;
     } while(++f != end);
     return false;
   };
@@ -559,32 +610,32 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
   for(bool more = true; more;) {
     more = false;
     std::unordered_set<Vertex_handle> surface_vertex;
-    for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
-      for(int i = 1; i < 4; ++i) surface_vertex.insert(f->first->vertex((f->second + i) % 4));
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        if(is_boundary_facet(c3t3, c, i))
+          for(int k = 1; k < 4; ++k) surface_vertex.insert(c->vertex((i + k) % 4));
     std::vector<Cell_handle> caps;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       int facets = 0;
-      for(int i = 0; i < 4; ++i) facets += c3t3.is_in_complex(c, i) ? 1 : 0;
+      for(int i = 0; i < 4; ++i) facets += is_boundary_facet(c3t3, c, i) ? 1 : 0;
       if(facets != 2) continue;
       bool all_on_surface = true;
       for(int i = 0; i < 4 && all_on_surface; ++i) all_on_surface = surface_vertex.count(c->vertex(i)) > 0;
       if(!all_on_surface) continue;
       double boundary_area = 0;
       for(int i = 0; i < 4; ++i)
-        if(c3t3.is_in_complex(c, i)) boundary_area += area(c, i);
+        if(is_boundary_facet(c3t3, c, i)) boundary_area += area(c, i);
       const double volume = std::abs(CGAL::to_double(CGAL::volume(point(tr.point(c, 0)), point(tr.point(c, 1)),
                                                                   point(tr.point(c, 2)), point(tr.point(c, 3)))));
       if(3 * volume < (std::min)(thickness, 0.1 * std::sqrt(boundary_area)) * boundary_area) caps.push_back(c);
     }
     for(Cell_handle c : caps) {
       // The vertices opposite the boundary facets span the edge that the inner facets share.
-      int opposite[2], k = 0, inner[2], m = 0;
-      for(int i = 0; i < 4; ++i) (c3t3.is_in_complex(c, i) ? opposite[k++] : inner[m++]) = i;
-      if(k != 2 || on_boundary(c, opposite[0], opposite[1])) continue;   // (an earlier peel may have changed it)
-      const auto patch = c3t3.surface_patch_index(c, opposite[0]);
-      c3t3.remove_from_complex(c);
-      for(int i : opposite) c3t3.remove_from_complex(c, i);
-      for(int i : inner) c3t3.add_to_complex(c, i, patch);
+      int opposite[2], k = 0;
+      for(int i = 0; i < 4; ++i)
+        if(is_boundary_facet(c3t3, c, i) && k < 2) opposite[k++] = i;
+      if(k != 2 || !c3t3.is_in_complex(c) || on_boundary(c, opposite[0], opposite[1])) continue;   // (an earlier peel may have changed it)
+      set_in_complex(c3t3, c, false, c3t3.subdomain_index(c), c3t3.surface_patch_index(c, opposite[0]));
       ++peeled;
       more = true;
     }
@@ -592,11 +643,15 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
   return peeled;
 }
 
-// A vertex of the complex's boundary near which the boundary is not a 2-manifold (an edge with
-// more than two boundary facets, or a vertex whose boundary facets make more than one fan: two
-// parts of the mesh touching there), the first in the order of the facets; null if none.
+// The boundary of the complex is made of the facets between its cells and the others (Mesh_3's
+// facets in the complex, where the surface crosses their dual Voronoi edges, may differ in a few
+// places). A vertex of that boundary where it is not a 2-manifold, the first in the order of the
+// cells, with the other end of an edge there that has more than two boundary
+// facets (null if every edge has two: the vertex's boundary facets then make several fans, two
+// parts of the mesh touching at it); both null if the boundary is a 2-manifold.
 template <class C3T3>
-typename C3T3::Triangulation::Vertex_handle non_manifold_boundary_vertex(const C3T3& c3t3)
+std::pair<typename C3T3::Triangulation::Vertex_handle, typename C3T3::Triangulation::Vertex_handle>
+non_manifold_boundary_place(const C3T3& c3t3)
 {
   using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
   using Edge = std::pair<Vertex_handle, Vertex_handle>;
@@ -604,20 +659,23 @@ typename C3T3::Triangulation::Vertex_handle non_manifold_boundary_vertex(const C
   std::map<Edge, int> facets_at;   // looked up only: the order of the handles does not matter
   std::unordered_map<Vertex_handle, std::vector<Edge>> link;   // each vertex's facets, by their opposite edges
   std::vector<Vertex_handle> order;   // the boundary vertices, first seen first
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
-    Vertex_handle w[3];
-    for(int i = 0; i < 3; ++i) w[i] = f->first->vertex((f->second + 1 + i) % 4);
-    for(int i = 0; i < 3; ++i) {
-      ++facets_at[edge(w[i], w[(i + 1) % 3])];
-      auto& l = link[w[i]];
-      if(l.empty()) order.push_back(w[i]);
-      l.push_back(edge(w[(i + 1) % 3], w[(i + 2) % 3]));
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int k = 0; k < 4; ++k) {
+      if(c3t3.is_in_complex(c->neighbor(k))) continue;
+      Vertex_handle w[3];
+      for(int i = 0; i < 3; ++i) w[i] = c->vertex((k + 1 + i) % 4);
+      for(int i = 0; i < 3; ++i) {
+        ++facets_at[edge(w[i], w[(i + 1) % 3])];
+        auto& l = link[w[i]];
+        if(l.empty()) order.push_back(w[i]);
+        l.push_back(edge(w[(i + 1) % 3], w[(i + 2) % 3]));
+      }
     }
-  }
   for(const Vertex_handle v : order) {
     const auto& l = link[v];
     for(const Edge& e : l)
-      if(facets_at[edge(v, e.first)] != 2 || facets_at[edge(v, e.second)] != 2) return v;
+      for(const Vertex_handle u : {e.first, e.second})
+        if(facets_at[edge(v, u)] != 2) return {v, u};
     // Every edge at v has two facets, so its link is a union of cycles: one, or v is pinched.
     std::map<Vertex_handle, std::array<Vertex_handle, 2>> next;
     for(const Edge& e : l) {
@@ -635,9 +693,99 @@ typename C3T3::Triangulation::Vertex_handle non_manifold_boundary_vertex(const C
       at = after;
       ++walked;
     } while(previous != l.front().first && walked <= l.size());
-    if(walked != l.size()) return v;
+    if(walked != l.size()) return {v, Vertex_handle()};
   }
-  return Vertex_handle();
+  return {Vertex_handle(), Vertex_handle()};
+}
+
+// Where parts of the surface are closer than the sizes, Mesh_3's tetrahedra may touch only at a
+// vertex or along an edge (9 of the 66 closed surfaces of libcgal-demo at the default sizes, at
+// the same places with half the sizes), or the space outside them may (a thin hole or slot
+// closing at a vertex). There, the tetrahedra on that side at the vertex are grouped (joined
+// through their facets at it; at an edge with more than two boundary facets, the fans of
+// tetrahedra of the complex around it), and all but the group of largest volume change sides:
+// touching parts are separated, a closing hole is filled at the vertex. Repeated while the
+// boundary is not a 2-manifold, up to `limit` cells changed at 100 places (hand.off and dino.off:
+// a few cells; cheese.off, a thin-walled box with holes, and rotor.off stay refused). Returns the
+// number of cells changed.
+template <class C3T3>
+std::size_t separate_touching_tetrahedra(C3T3& c3t3, std::size_t limit)
+{
+  using Tr = typename C3T3::Triangulation;
+  using Cell_handle = typename Tr::Cell_handle;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  const Tr& tr = c3t3.triangulation();
+  const auto point = tr.geom_traits().construct_point_3_object();
+  const auto volume = [&](Cell_handle c) {
+    if(tr.is_infinite(c)) return std::numeric_limits<double>::infinity();   // the outside stays outside
+    return CGAL::to_double(CGAL::volume(point(tr.point(c, 0)), point(tr.point(c, 1)), point(tr.point(c, 2)), point(tr.point(c, 3))));
+  };
+  // The cells at v on one side (in the complex or not), joined through their facets at v.
+  const auto groups_at = [&](Vertex_handle v, bool in) {
+    std::vector<Cell_handle> cells;
+    tr.incident_cells(v, std::back_inserter(cells));
+    std::vector<std::vector<Cell_handle>> groups;
+    std::unordered_set<Cell_handle> seen;
+    for(Cell_handle c : cells) {
+      if(c3t3.is_in_complex(c) != in || !seen.insert(c).second) continue;
+      groups.push_back({c});
+      for(std::size_t k = 0; k < groups.back().size(); ++k) {
+        const Cell_handle a = groups.back()[k];
+        for(int i = 0; i < 4; ++i) {
+          const Cell_handle b = a->neighbor(i);
+          if(i != a->index(v) && c3t3.is_in_complex(b) == in && seen.insert(b).second) groups.back().push_back(b);
+        }
+      }
+    }
+    return groups;
+  };
+  // The fans of cells of the complex around the edge (v, u), in the order of a circulation.
+  const auto fans_around = [&](Vertex_handle v, Vertex_handle u) {
+    std::vector<std::vector<Cell_handle>> fans;
+    Cell_handle c;
+    int i, j;
+    if(!tr.is_edge(v, u, c, i, j)) return fans;
+    auto around = tr.incident_cells(typename Tr::Edge(c, i, j)), end = around;
+    // Start after a cell outside the complex, so that no fan is cut in two.
+    while(c3t3.is_in_complex(around) && ++around != end) {}
+    end = around;
+    bool in_fan = false;
+    do {
+      const bool in = c3t3.is_in_complex(around);
+      if(in && !in_fan) fans.emplace_back();
+      if(in) fans.back().push_back(around);
+      in_fan = in;
+    } while(++around != end);
+    return fans;
+  };
+  const auto first = *c3t3.facets_in_complex_begin();
+  const auto patch = c3t3.surface_patch_index(first.first, first.second);
+  const auto subdomain = c3t3.subdomain_index(c3t3.cells_in_complex_begin());
+  std::size_t changed = 0;
+  for(int place = 0; changed <= limit && place < 100; ++place) {   // each place costs a pass over the boundary
+    const auto [v, u] = non_manifold_boundary_place(c3t3);
+    if(v == Vertex_handle()) break;
+    bool in = true;
+    auto groups = u != Vertex_handle() ? fans_around(v, u) : groups_at(v, true);
+    if(groups.size() < 2 && u == Vertex_handle()) {
+      in = false;
+      groups = groups_at(v, false);
+    }
+    if(groups.size() < 2) break;
+    std::size_t largest = 0;
+    std::vector<double> size(groups.size(), 0.);
+    for(std::size_t g = 0; g < groups.size(); ++g) {
+      for(Cell_handle c : groups[g]) size[g] += volume(c);
+      if(size[g] > size[largest]) largest = g;
+    }
+    for(std::size_t g = 0; g < groups.size(); ++g)
+      if(g != largest)
+        for(Cell_handle c : groups[g]) {
+          set_in_complex(c3t3, c, !in, subdomain, patch);
+          ++changed;
+        }
+  }
+  return changed;
 }
 
 // Two faces of different components of `surface` (numbered per face by `component`) closer than
@@ -836,10 +984,15 @@ self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.
 tetrahedra (median 2.7.10^4) in 0.1 to 6 s (median 0.4 s) on one core; the largest counts come
 from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
 with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
-(mpi_triang.off) stops at `maximum_number_of_vertices`. Nine of them (armadillo, cheese, dino,
-femur, hand, homer, rotor, rotor_small, triceratops) give tetrahedra that touch only along an
-edge or at a vertex at these sizes, and are refused (hand.off meshes with a cell size of 0.02:
-1.4.10^5 tetrahedra). Sizes are in the units of the input, and
+(mpi_triang.off) stops at `maximum_number_of_vertices`. Where parts of the surface are closer
+than the sizes, Mesh_3's tetrahedra may touch only along an edge or at a vertex (nine of those
+surfaces at the default sizes: armadillo, cheese, dino, femur, hand, homer, rotor, rotor_small,
+triceratops, at the same places with half the sizes): there, the smaller side changes sides (the
+tetrahedra of the smaller group at that vertex leave the complex, or the space of a hole closing
+there is filled), at up to 100 places and 1% of the cells; six of the nine are meshed so, and
+cheese (thin walls), rotor and rotor_small are refused. The facets of the returned complex are
+exactly the boundary of its cells (Mesh_3's facets, those whose dual Voronoi edge crosses the
+surface, differ from it in a few places). Sizes are in the units of the input, and
 Mesh_3 runs on a copy scaled by a power of two to unit size: a surface of any size whose volume a
 `double` holds is meshed alike, and a surface scaled by a power of two gives exactly the scaled complex
 (points and weights). A surface far from the origin for its size (within \f$ [m, 2m] \f$ along an
@@ -1001,8 +1154,9 @@ number (or an angle or ratio is out of its range), if the sizes ask for more ver
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
 tetrahedron even when seeded (the error names one of its faces), if the boundary of the complex
-is not a 2-manifold (tetrahedra that touch only along an edge or at a vertex, where parts of the
-surface are closer than the sizes: the error gives the place; smaller sizes are the remedy), or
+is not a 2-manifold after the changes of sides above (tetrahedra that touch only along an edge
+or at a vertex, where parts of the surface are closer than the sizes: the error gives the place;
+smaller sizes may be the remedy), or
 if the surface is so far from the origin for its size that a cell of the complex, its points
 rounded to the input's precision, is not positively oriented.
 */
@@ -1139,12 +1293,14 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   if(lloyd > 0) CGAL::lloyd_optimize_mesh_3(c3t3, domain, mp::time_limit = 0, mp::max_iteration_number = lloyd);
   if(perturb) CGAL::perturb_mesh_3(c3t3, domain, mp::time_limit = 0);
   if(exude) CGAL::exude_mesh_3(c3t3, mp::time_limit = 0);
+  internal::match_facets_to_cells(c3t3);
+  internal::separate_touching_tetrahedra(c3t3, c3t3.number_of_cells_in_complex() / 100);
   internal::peel_flat_caps(c3t3, s * sizes.facet_distance);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw Invalid_input("mesh_interior: Mesh_3 produced no tetrahedron inside the surface (sizes too large "
                         "for the volume?)");
   internal::map_complex_back(c3t3, 1 / s, checked.offset);
-  if(const auto v = internal::non_manifold_boundary_vertex(c3t3); v != typename Types::Triangulation::Vertex_handle()) {
+  if(const auto v = internal::non_manifold_boundary_place(c3t3).first; v != typename Types::Triangulation::Vertex_handle()) {
     const auto p = c3t3.triangulation().geom_traits().construct_point_3_object()(v->point());
     char text[160];
     std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
