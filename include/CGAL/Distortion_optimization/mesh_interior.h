@@ -193,6 +193,9 @@ struct Interior_mesh_defaults
   static constexpr double facet_angle = 25;
   static constexpr double radius_edge_ratio = 3;
   static constexpr double sharp_edge_angle = 60;
+  // Without exude_slivers, Mesh_3's exudation still runs on the cells with a dihedral angle below
+  // this (degrees): a few milliseconds (see mesh_interior()).
+  static constexpr double sliver_bound = 2;
 };
 
 // A checked copy of the input surface for the domain, oriented to bound its volume, moved by
@@ -972,7 +975,11 @@ and than a tenth of their width (smallest dihedral angles of 0.1 to 1.5 degrees)
 volume and which a start map that bends the surface (the radial map, the unit ball map) can turn
 over with every vertex on the boundary, where no optimization with a fixed boundary can undo it.
 They are removed from the complex, their two inner facets becoming boundary facets, less than the
-facet distance deeper (blobby.off: 35 of 2.7.10^4 cells). Two runs with the same input give the same complex (the
+facet distance deeper (blobby.off: 35 of 2.7.10^4 cells). Inside, Mesh_3 leaves a few cells as
+flat with all four vertices on the surface across thin parts (spool.off: one, with a dihedral
+angle of 0.04 degrees, which the radial map turned over): without `exude_slivers`, Mesh_3's
+sliver exudation still runs on the cells with a dihedral angle below 2 degrees (a few
+milliseconds: 3 to 30 on spool.off and blobby.off). Two runs with the same input give the same complex (the
 random generator of Mesh_3 is seeded, the optimizers have no time limit).
 
 Defaults. Without sizes, the criteria scale with the enclosed volume V and the area A of the
@@ -1125,8 +1132,9 @@ h / 10.
   \cgalParamNEnd
 
   \cgalParamNBegin{exude_slivers}
-    \cgalParamDescription{if `true`, Mesh_3's sliver exudation (`CGAL::exude_mesh_3()`) runs last
-                          (`Distortion_optimization::parameters::exude_slivers()`)}
+    \cgalParamDescription{if `true`, Mesh_3's sliver exudation (`CGAL::exude_mesh_3()`) runs last, on every cell
+                          (`Distortion_optimization::parameters::exude_slivers()`); if `false`, only on the cells
+                          with a dihedral angle below 2 degrees}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
@@ -1293,6 +1301,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   if(lloyd > 0) CGAL::lloyd_optimize_mesh_3(c3t3, domain, mp::time_limit = 0, mp::max_iteration_number = lloyd);
   if(perturb) CGAL::perturb_mesh_3(c3t3, domain, mp::time_limit = 0);
   if(exude) CGAL::exude_mesh_3(c3t3, mp::time_limit = 0);
+  else CGAL::exude_mesh_3(c3t3, mp::sliver_bound = D::sliver_bound, mp::time_limit = 0);
   internal::match_facets_to_cells(c3t3);
   internal::separate_touching_tetrahedra(c3t3, c3t3.number_of_cells_in_complex() / 100);
   internal::peel_flat_caps(c3t3, s * sizes.facet_distance);
