@@ -581,7 +581,9 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     for(const auto& [library, tool] : {std::pair<std::string, std::string>("; give larger sizes", "; give a larger --cell-size"),
                                        {"; give sizes below its thickness", "; give a --cell-size below 10 times its thickness"},
                                        {"; give sizes below their distance", "; give a --cell-size below 10 times their distance"},
-                                       {"; try a larger sharp_edge_angle", "; give a smaller --cell-size"},
+                                       {"; try a larger sharp_edge_angle",   // (a smaller --cell-size would ask for more vertices)
+                                        "; the tool has neither option: mesh it with the library's mesh_interior() and a larger "
+                                        "sharp_edge_angle (180 protects no edge) or maximum_number_of_vertices, then give the .mesh"},
                                        {"; give smaller sizes", "; give a smaller --cell-size"}})
       if(const auto remedy = what.find(library); remedy != std::string::npos) what = what.substr(0, remedy) + tool;
     throw DO::Invalid_input(c.source + ": " + what);

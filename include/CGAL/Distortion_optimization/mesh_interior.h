@@ -64,7 +64,6 @@
 #include <map>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -648,57 +647,77 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
 
 // The boundary of the complex is made of the facets between its cells and the others (Mesh_3's
 // facets in the complex, where the surface crosses their dual Voronoi edges, may differ in a few
-// places). A vertex of that boundary where it is not a 2-manifold, the first in the order of the
-// cells, with the other end of an edge there that has more than two boundary
-// facets (null if every edge has two: the vertex's boundary facets then make several fans, two
-// parts of the mesh touching at it); both null if the boundary is a 2-manifold.
+// places). Whether that boundary is a 2-manifold at vertex v: the boundary facets at v, by their
+// edges opposite v, must make one cycle. Returns (v, u) where an edge (v, u) has more than two
+// boundary facets, (v, null) where every edge has two but the facets make several fans (two parts
+// of the mesh touching at v), and (null, null) where the boundary is a 2-manifold at v.
+template <class C3T3>
+std::pair<typename C3T3::Triangulation::Vertex_handle, typename C3T3::Triangulation::Vertex_handle>
+non_manifold_boundary_at(const C3T3& c3t3, typename C3T3::Triangulation::Vertex_handle v)
+{
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  using Cell_handle = typename C3T3::Triangulation::Cell_handle;
+  std::vector<Cell_handle> cells;
+  c3t3.triangulation().incident_cells(v, std::back_inserter(cells));
+  std::vector<std::pair<Vertex_handle, Vertex_handle>> link;
+  for(Cell_handle c : cells) {
+    if(!c3t3.is_in_complex(c)) continue;
+    const int at = c->index(v);
+    for(int i = 0; i < 4; ++i)
+      if(i != at && !c3t3.is_in_complex(c->neighbor(i))) {
+        Vertex_handle w[2];
+        int k = 0;
+        for(int j = 0; j < 4; ++j)
+          if(j != i && j != at) w[k++] = c->vertex(j);
+        link.emplace_back(w[0], w[1]);
+      }
+  }
+  if(link.empty()) return {Vertex_handle(), Vertex_handle()};
+  std::map<Vertex_handle, std::vector<Vertex_handle>> next;   // looked up only: the order does not matter
+  for(const auto& [a, b] : link) {
+    next[a].push_back(b);
+    next[b].push_back(a);
+  }
+  // Around a boundary edge (v, u) the link has one edge per boundary facet at u.
+  for(const auto& [a, b] : link)
+    for(const Vertex_handle u : {a, b})
+      if(next[u].size() != 2) return {v, u};
+  std::size_t walked = 0;
+  Vertex_handle previous = link.front().first, at = link.front().second;
+  do {
+    const auto& n = next[at];
+    const Vertex_handle after = n[0] == previous ? n[1] : n[0];
+    previous = at;
+    at = after;
+    ++walked;
+  } while(previous != link.front().first && walked <= link.size());
+  if(walked != link.size()) return {v, Vertex_handle()};
+  return {Vertex_handle(), Vertex_handle()};
+}
+
+// The vertices on the boundary of the complex, first seen first in the order of its cells.
+template <class C3T3>
+std::vector<typename C3T3::Triangulation::Vertex_handle> boundary_vertices_in_order(const C3T3& c3t3)
+{
+  std::vector<typename C3T3::Triangulation::Vertex_handle> order;
+  std::unordered_set<typename C3T3::Triangulation::Vertex_handle> seen;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(!c3t3.is_in_complex(c->neighbor(i)))
+        for(int k = 1; k < 4; ++k)
+          if(seen.insert(c->vertex((i + k) % 4)).second) order.push_back(c->vertex((i + k) % 4));
+  return order;
+}
+
+// The first place, in the order of the cells, where the boundary of the complex is not a
+// 2-manifold (see non_manifold_boundary_at()); (null, null) if none.
 template <class C3T3>
 std::pair<typename C3T3::Triangulation::Vertex_handle, typename C3T3::Triangulation::Vertex_handle>
 non_manifold_boundary_place(const C3T3& c3t3)
 {
-  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
-  using Edge = std::pair<Vertex_handle, Vertex_handle>;
-  const auto edge = [](Vertex_handle a, Vertex_handle b) { return a < b ? Edge(a, b) : Edge(b, a); };
-  std::map<Edge, int> facets_at;   // looked up only: the order of the handles does not matter
-  std::unordered_map<Vertex_handle, std::vector<Edge>> link;   // each vertex's facets, by their opposite edges
-  std::vector<Vertex_handle> order;   // the boundary vertices, first seen first
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int k = 0; k < 4; ++k) {
-      if(c3t3.is_in_complex(c->neighbor(k))) continue;
-      Vertex_handle w[3];
-      for(int i = 0; i < 3; ++i) w[i] = c->vertex((k + 1 + i) % 4);
-      for(int i = 0; i < 3; ++i) {
-        ++facets_at[edge(w[i], w[(i + 1) % 3])];
-        auto& l = link[w[i]];
-        if(l.empty()) order.push_back(w[i]);
-        l.push_back(edge(w[(i + 1) % 3], w[(i + 2) % 3]));
-      }
-    }
-  for(const Vertex_handle v : order) {
-    const auto& l = link[v];
-    for(const Edge& e : l)
-      for(const Vertex_handle u : {e.first, e.second})
-        if(facets_at[edge(v, u)] != 2) return {v, u};
-    // Every edge at v has two facets, so its link is a union of cycles: one, or v is pinched.
-    std::map<Vertex_handle, std::array<Vertex_handle, 2>> next;
-    for(const Edge& e : l) {
-      auto& a = next[e.first];
-      a[a[0] == Vertex_handle() ? 0 : 1] = e.second;
-      auto& b = next[e.second];
-      b[b[0] == Vertex_handle() ? 0 : 1] = e.first;
-    }
-    std::size_t walked = 0;
-    Vertex_handle previous = l.front().first, at = l.front().second;
-    do {
-      const auto& n = next[at];
-      const Vertex_handle after = n[0] == previous ? n[1] : n[0];
-      previous = at;
-      at = after;
-      ++walked;
-    } while(previous != l.front().first && walked <= l.size());
-    if(walked != l.size()) return {v, Vertex_handle()};
-  }
-  return {Vertex_handle(), Vertex_handle()};
+  for(const auto v : boundary_vertices_in_order(c3t3))
+    if(const auto place = non_manifold_boundary_at(c3t3, v); place.first != decltype(v)()) return place;
+  return {};
 }
 
 // Where parts of the surface are closer than the sizes, Mesh_3's tetrahedra may touch only at a
@@ -765,28 +784,37 @@ std::size_t separate_touching_tetrahedra(C3T3& c3t3, std::size_t limit)
   const auto patch = c3t3.surface_patch_index(first.first, first.second);
   const auto subdomain = c3t3.subdomain_index(c3t3.cells_in_complex_begin());
   std::size_t changed = 0;
-  for(int place = 0; changed <= limit && place < 100; ++place) {   // each place costs a pass over the boundary
-    const auto [v, u] = non_manifold_boundary_place(c3t3);
-    if(v == Vertex_handle()) break;
-    bool in = true;
-    auto groups = u != Vertex_handle() ? fans_around(v, u) : groups_at(v, true);
-    if(groups.size() < 2 && u == Vertex_handle()) {
-      in = false;
-      groups = groups_at(v, false);
+  int places = 0;
+  // Passes over the boundary's vertices, each place repaired where it is found; a repair can make
+  // a neighbouring vertex a boundary vertex, which the next pass sees.
+  for(bool repaired = true; repaired && changed <= limit && places < 100;) {
+    repaired = false;
+    for(const Vertex_handle w : boundary_vertices_in_order(c3t3)) {
+      if(changed > limit || places >= 100) break;
+      const auto [v, u] = non_manifold_boundary_at(c3t3, w);
+      if(v == Vertex_handle()) continue;
+      ++places;
+      bool in = true;
+      auto groups = u != Vertex_handle() ? fans_around(v, u) : groups_at(v, true);
+      if(groups.size() < 2 && u == Vertex_handle()) {
+        in = false;
+        groups = groups_at(v, false);
+      }
+      if(groups.size() < 2) continue;   // not a touching: left to the final check
+      std::size_t largest = 0;
+      std::vector<double> size(groups.size(), 0.);
+      for(std::size_t g = 0; g < groups.size(); ++g) {
+        for(Cell_handle c : groups[g]) size[g] += volume(c);
+        if(size[g] > size[largest]) largest = g;
+      }
+      for(std::size_t g = 0; g < groups.size(); ++g)
+        if(g != largest)
+          for(Cell_handle c : groups[g]) {
+            set_in_complex(c3t3, c, !in, subdomain, patch);
+            ++changed;
+          }
+      repaired = true;
     }
-    if(groups.size() < 2) break;
-    std::size_t largest = 0;
-    std::vector<double> size(groups.size(), 0.);
-    for(std::size_t g = 0; g < groups.size(); ++g) {
-      for(Cell_handle c : groups[g]) size[g] += volume(c);
-      if(size[g] > size[largest]) largest = g;
-    }
-    for(std::size_t g = 0; g < groups.size(); ++g)
-      if(g != largest)
-        for(Cell_handle c : groups[g]) {
-          set_in_complex(c3t3, c, !in, subdomain, patch);
-          ++changed;
-        }
   }
   return changed;
 }
