@@ -807,12 +807,14 @@ std::size_t separate_touching_tetrahedra(C3T3& c3t3, std::size_t limit)
         for(Cell_handle c : groups[g]) size[g] += volume(c);
         if(size[g] > size[largest]) largest = g;
       }
-      for(std::size_t g = 0; g < groups.size(); ++g)
-        if(g != largest)
-          for(Cell_handle c : groups[g]) {
-            set_in_complex(c3t3, c, !in, subdomain, patch);
-            ++changed;
-          }
+      for(std::size_t g = 0; g < groups.size(); ++g) {
+        // (Two sides of the outside at a vertex of the triangulation's hull: neither is filled.)
+        if(g == largest || (!in && std::isinf(size[g]))) continue;
+        for(Cell_handle c : groups[g]) {
+          set_in_complex(c3t3, c, !in, subdomain, patch);
+          ++changed;
+        }
+      }
       repaired = true;
     }
   }
