@@ -578,6 +578,29 @@ std::size_t match_facets_to_cells(C3T3& c3t3)
   return extra.size() + missing.size();
 }
 
+// The vertices on the boundary of the complex, first seen first in the order of its cells.
+template <class C3T3>
+std::vector<typename C3T3::Triangulation::Vertex_handle> boundary_vertices_in_order(const C3T3& c3t3)
+{
+  std::vector<typename C3T3::Triangulation::Vertex_handle> order;
+  std::unordered_set<typename C3T3::Triangulation::Vertex_handle> seen;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(is_boundary_facet(c3t3, c, i))
+        for(int k = 1; k < 4; ++k)
+          if(seen.insert(c->vertex((i + k) % 4)).second) order.push_back(c->vertex((i + k) % 4));
+  return order;
+}
+
+// The signed volume of cell c of the triangulation of the complex (finite).
+template <class C3T3>
+double cell_volume(const C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c)
+{
+  const auto& tr = c3t3.triangulation();
+  const auto point = tr.geom_traits().construct_point_3_object();
+  return CGAL::to_double(CGAL::volume(point(tr.point(c, 0)), point(tr.point(c, 1)), point(tr.point(c, 2)), point(tr.point(c, 3))));
+}
+
 // Mesh_3 leaves a few flat caps on the surface: cells with two boundary facets and all four
 // vertices on the surface, their two other facets nearly in the same place (the two diagonals of
 // a nearly flat quadrilateral). They hold no volume, and a start map that bends the surface (the
@@ -608,14 +631,12 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
     } while(++f != end);
     return false;
   };
+  // Peeling keeps these: a cap's new boundary facets have its four vertices, already on the surface.
+  const auto boundary_vertices = boundary_vertices_in_order(c3t3);
+  const std::unordered_set<Vertex_handle> surface_vertex(boundary_vertices.begin(), boundary_vertices.end());
   std::size_t peeled = 0;
   for(bool more = true; more;) {
     more = false;
-    std::unordered_set<Vertex_handle> surface_vertex;
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-      for(int i = 0; i < 4; ++i)
-        if(is_boundary_facet(c3t3, c, i))
-          for(int k = 1; k < 4; ++k) surface_vertex.insert(c->vertex((i + k) % 4));
     std::vector<Cell_handle> caps;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       int facets = 0;
@@ -627,8 +648,7 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
       double boundary_area = 0;
       for(int i = 0; i < 4; ++i)
         if(is_boundary_facet(c3t3, c, i)) boundary_area += area(c, i);
-      const double volume = std::abs(CGAL::to_double(CGAL::volume(point(tr.point(c, 0)), point(tr.point(c, 1)),
-                                                                  point(tr.point(c, 2)), point(tr.point(c, 3)))));
+      const double volume = std::abs(cell_volume(c3t3, c));
       if(3 * volume < (std::min)(thickness, 0.1 * std::sqrt(boundary_area)) * boundary_area) caps.push_back(c);
     }
     for(Cell_handle c : caps) {
@@ -664,7 +684,7 @@ non_manifold_boundary_at(const C3T3& c3t3, typename C3T3::Triangulation::Vertex_
     if(!c3t3.is_in_complex(c)) continue;
     const int at = c->index(v);
     for(int i = 0; i < 4; ++i)
-      if(i != at && !c3t3.is_in_complex(c->neighbor(i))) {
+      if(i != at && is_boundary_facet(c3t3, c, i)) {
         Vertex_handle w[2];
         int k = 0;
         for(int j = 0; j < 4; ++j)
@@ -695,20 +715,6 @@ non_manifold_boundary_at(const C3T3& c3t3, typename C3T3::Triangulation::Vertex_
   return {Vertex_handle(), Vertex_handle()};
 }
 
-// The vertices on the boundary of the complex, first seen first in the order of its cells.
-template <class C3T3>
-std::vector<typename C3T3::Triangulation::Vertex_handle> boundary_vertices_in_order(const C3T3& c3t3)
-{
-  std::vector<typename C3T3::Triangulation::Vertex_handle> order;
-  std::unordered_set<typename C3T3::Triangulation::Vertex_handle> seen;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i)))
-        for(int k = 1; k < 4; ++k)
-          if(seen.insert(c->vertex((i + k) % 4)).second) order.push_back(c->vertex((i + k) % 4));
-  return order;
-}
-
 // The first place, in the order of the cells, where the boundary of the complex is not a
 // 2-manifold (see non_manifold_boundary_at()); (null, null) if none.
 template <class C3T3>
@@ -737,10 +743,9 @@ std::size_t separate_touching_tetrahedra(C3T3& c3t3, std::size_t limit)
   using Cell_handle = typename Tr::Cell_handle;
   using Vertex_handle = typename Tr::Vertex_handle;
   const Tr& tr = c3t3.triangulation();
-  const auto point = tr.geom_traits().construct_point_3_object();
   const auto volume = [&](Cell_handle c) {
-    if(tr.is_infinite(c)) return std::numeric_limits<double>::infinity();   // the outside stays outside
-    return CGAL::to_double(CGAL::volume(point(tr.point(c, 0)), point(tr.point(c, 1)), point(tr.point(c, 2)), point(tr.point(c, 3))));
+    return tr.is_infinite(c) ? std::numeric_limits<double>::infinity()   // the outside stays outside
+                             : cell_volume(c3t3, c);
   };
   // The cells at v on one side (in the complex or not), joined through their facets at v.
   const auto groups_at = [&](Vertex_handle v, bool in) {
