@@ -198,6 +198,34 @@ Surface triangulated_cube()
   return s;
 }
 
+// A closed surface of revolution about the z axis: radius r(z) on [z0, z1], nz - 1 rings of nt
+// points between the poles (z0 and z1).
+template <class Profile>
+Surface surface_of_revolution(const Profile& r, double z0, double z1, int nz, int nt)
+{
+  Surface s;
+  std::vector<Surface::Vertex_index> v{s.add_vertex(Point(0, 0, z0))};
+  for(int i = 1; i < nz; ++i) {
+    const double z = z0 + (z1 - z0) * i / nz;
+    for(int j = 0; j < nt; ++j) {
+      const double t = 2 * CGAL_PI * j / nt;
+      v.push_back(s.add_vertex(Point(r(z) * std::cos(t), r(z) * std::sin(t), z)));
+    }
+  }
+  const Surface::Vertex_index top = s.add_vertex(Point(0, 0, z1));
+  const auto ring = [&](int i, int j) { return v[1 + (i - 1) * nt + j % nt]; };
+  for(int j = 0; j < nt; ++j) {
+    s.add_face(v[0], ring(1, j + 1), ring(1, j));
+    s.add_face(top, ring(nz - 1, j), ring(nz - 1, j + 1));
+  }
+  for(int i = 1; i < nz - 1; ++i)
+    for(int j = 0; j < nt; ++j) {
+      s.add_face(ring(i, j), ring(i, j + 1), ring(i + 1, j + 1));
+      s.add_face(ring(i, j), ring(i + 1, j + 1), ring(i + 1, j));
+    }
+  return s;
+}
+
 // Expects the facets of the complex to be the boundary of its cells (a facet between a cell of
 // the complex and another), and that boundary to be a 2-manifold.
 void expect_manifold_boundary_of_the_cells(const C3t3& c3t3)
@@ -557,6 +585,37 @@ TEST(VolumeWorkflow, TouchingTetrahedraAreSeparatedOrRefused)
 
   DEMO_SURFACE(rotor, "rotor.off");
   expect_invalid([&] { DO::mesh_interior(rotor); }, ") without sharing a facet: their boundary is not a 2-manifold there");
+}
+
+// Details finer than the sizes may change the topology while the complex stays valid: a sphere
+// pinched to a waist of radius 0.005 came out as a torus (tetrahedra bridged the waist), a dumbbell
+// with a neck of radius 0.01 as two balls. The boundary's components and genera must be the input's.
+TEST(VolumeWorkflow, TopologyChangesAreRefused)
+{
+  const auto pinched = [](double waist) {
+    return surface_of_revolution([waist](double z) { return std::sqrt(std::max(0.0, 1 - z * z)) *
+                                                            (waist + (1 - waist) * std::min(1.0, std::abs(z) / 0.3)); },
+                                 -1, 1, 60, 32);
+  };
+  const Surface waisted = pinched(0.3);
+  const C3t3 c3t3 = DO::mesh_interior(waisted);
+  expect_manifold_boundary_of_the_cells(c3t3);
+  EXPECT_EQ(DO::internal::boundary_genera(c3t3), std::vector<long>{0});
+  expect_invalid([&] { DO::mesh_interior(pinched(0.005)); },
+                 "the boundary of Mesh_3's tetrahedra has 1 component of genus 1, the surface 1 component of genus 0: "
+                 "a neck or gap of the surface finer than the sizes was cut or bridged; give smaller sizes");
+
+  const double neck = 0.01, length = 0.5;
+  const Surface dumbbell = surface_of_revolution([&](double z) {
+      const double from_centre = std::abs(z) - length / 2 - 1;
+      return std::abs(z) <= length / 2 ? neck : std::max(neck, std::sqrt(std::max(0.0, 1 - from_centre * from_centre)));
+    }, -length / 2 - 2, length / 2 + 2, 80, 32);
+  expect_invalid([&] { DO::mesh_interior(dumbbell); }, "has 2 components of genera 0, 0, the surface 1 component of genus 0");
+
+  // The genera of real surfaces of genus 0 to 2 are kept.
+  DEMO_SURFACE(eight, "eight.off");
+  EXPECT_EQ(DO::internal::surface_genera(eight), std::vector<long>{2});
+  EXPECT_EQ(DO::internal::boundary_genera(DO::mesh_interior(eight)), std::vector<long>{2});
 }
 
 // Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes

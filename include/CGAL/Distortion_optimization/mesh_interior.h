@@ -64,6 +64,7 @@
 #include <map>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -726,6 +727,72 @@ non_manifold_boundary_place(const C3T3& c3t3)
   return {};
 }
 
+// The genera of the connected components of a closed, orientable 2-manifold surface given by its
+// triangles (vertex numbers below n), sorted: a component's V - E + F = V - F / 2 is 2 - 2 genus.
+inline std::vector<long> genera_of_components(std::size_t n, const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  std::vector<std::size_t> parent(n);
+  for(std::size_t v = 0; v < n; ++v) parent[v] = v;
+  const auto root = [&](std::size_t v) {
+    while(parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(const auto& t : triangles)
+    for(int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
+  std::vector<long> vertices(n, 0), faces(n, 0);
+  std::vector<bool> used(n, false);
+  for(const auto& t : triangles) {
+    ++faces[root(t[0])];
+    for(const std::size_t v : t) used[v] = true;
+  }
+  for(std::size_t v = 0; v < n; ++v)
+    if(used[v]) ++vertices[root(v)];
+  std::vector<long> genera;
+  for(std::size_t r = 0; r < n; ++r)
+    if(faces[r] > 0) genera.push_back(1 - (vertices[r] - faces[r] / 2) / 2);
+  std::sort(genera.begin(), genera.end());
+  return genera;
+}
+
+// The genera of the components of the boundary of the complex (a 2-manifold).
+template <class C3T3>
+std::vector<long> boundary_genera(const C3T3& c3t3)
+{
+  std::unordered_map<typename C3T3::Triangulation::Vertex_handle, std::size_t> number;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(is_boundary_facet(c3t3, c, i)) {
+        std::array<std::size_t, 3> t;
+        for(int k = 1; k < 4; ++k) t[k - 1] = number.emplace(c->vertex((i + k) % 4), number.size()).first->second;
+        triangles.push_back(t);
+      }
+  return genera_of_components(number.size(), triangles);
+}
+
+// The genera of the components of a closed triangle surface.
+template <class Surface>
+std::vector<long> surface_genera(const Surface& surface)
+{
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::size_t n = 0;
+  for(const auto f : faces(surface)) {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(const auto v : vertices_around_face(halfedge(f, surface), surface)) n = (std::max)(n, (t[k++] = std::size_t(v)) + 1);
+    triangles.push_back(t);
+  }
+  return genera_of_components(n, triangles);
+}
+
+// "2 components of genera 0, 1" (up to six listed).
+inline std::string describe_genera(const std::vector<long>& genera)
+{
+  std::string text = std::to_string(genera.size()) + (genera.size() == 1 ? " component of genus " : " components of genera ");
+  for(std::size_t i = 0; i < genera.size() && i < 6; ++i) text += (i > 0 ? ", " : "") + std::to_string(genera[i]);
+  return text + (genera.size() > 6 ? ", ..." : "");
+}
+
 // Where parts of the surface are closer than the sizes, Mesh_3's tetrahedra may touch only at a
 // vertex or along an edge (9 of the 66 closed surfaces of libcgal-demo at the default sizes, at
 // the same places with half the sizes), or the space outside them may (a thin hole or slot
@@ -1199,7 +1266,9 @@ number (or an angle or ratio is out of its range), if the sizes ask for more ver
 tetrahedron even when seeded (the error names one of its faces), if the boundary of the complex
 is not a 2-manifold after the changes of sides above (tetrahedra that touch only along an edge
 or at a vertex, where parts of the surface are closer than the sizes: the error gives the place;
-smaller sizes may be the remedy), or
+smaller sizes may be the remedy), if that boundary's components and their genera are not the
+surface's (a neck or gap finer than the sizes was cut or bridged: a sphere pinched to a waist of
+radius 0.005 came out as a torus at the default sizes; smaller sizes are the remedy), or
 if the surface is so far from the origin for its size that a cell of the complex, its points
 rounded to the input's precision, is not positively oriented.
 */
@@ -1352,6 +1421,13 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                         " without sharing a facet: their boundary is not a 2-manifold there (parts of the surface closer "
                         "than the sizes, or details finer than them); give smaller sizes");
   }
+  // Details finer than the sizes can change the topology with a valid complex: a sphere pinched to
+  // a waist of radius 0.005 came out as a torus (7 tetrahedra bridged the waist), a dumbbell's thin
+  // neck was dropped (two balls).
+  if(const auto meshed = internal::boundary_genera(c3t3), input = internal::surface_genera(checked.surface); meshed != input)
+    throw Invalid_input("mesh_interior: the boundary of Mesh_3's tetrahedra has " + internal::describe_genera(meshed) +
+                        ", the surface " + internal::describe_genera(input) +
+                        ": a neck or gap of the surface finer than the sizes was cut or bridged; give smaller sizes");
   return c3t3;
 }
 
