@@ -226,6 +226,32 @@ Surface surface_of_revolution(const Profile& r, double z0, double z1, int nz, in
   return s;
 }
 
+// A ring of square section (radii 0.8 and 1.2, height 0.4) cut by a slit `gap` wide at the inner
+// radius, its two ends flat: 64 sections of 4 vertices.
+Surface split_ring(double gap)
+{
+  const double r[4] = {0.8, 1.2, 1.2, 0.8}, z[4] = {-0.2, -0.2, 0.2, 0.2};
+  const int n = 64;
+  const double start = std::asin(gap / 2 / 0.8);
+  Surface s;
+  for(int i = 0; i <= n; ++i) {
+    const double t = start + (2 * CGAL_PI - 2 * start) * i / n;
+    for(int k = 0; k < 4; ++k) s.add_vertex(Point(r[k] * std::cos(t), r[k] * std::sin(t), z[k]));
+  }
+  const auto face = [&](int a, int b, int c) { s.add_face(Surface::Vertex_index(a), Surface::Vertex_index(b), Surface::Vertex_index(c)); };
+  for(int i = 0; i < n; ++i)
+    for(int k = 0; k < 4; ++k) {
+      const int a = 4 * i + k, b = 4 * i + (k + 1) % 4, c = 4 * (i + 1) + (k + 1) % 4, d = 4 * (i + 1) + k;
+      face(a, c, b);
+      face(a, d, c);
+    }
+  face(0, 1, 2);
+  face(0, 2, 3);
+  face(4 * n, 4 * n + 2, 4 * n + 1);
+  face(4 * n, 4 * n + 3, 4 * n + 2);
+  return s;
+}
+
 // Expects the facets of the complex to be the boundary of its cells (a facet between a cell of
 // the complex and another), and that boundary to be a 2-manifold.
 void expect_manifold_boundary_of_the_cells(const C3t3& c3t3)
@@ -589,8 +615,9 @@ TEST(VolumeWorkflow, TouchingTetrahedraAreSeparatedOrRefused)
 
 // Details finer than the sizes may change the topology while the complex stays valid: a sphere
 // pinched to a waist of radius 0.005 came out as a torus (tetrahedra bridged the waist), a dumbbell
-// with a neck of radius 0.01 as two balls. The boundary's components and genera must be the input's.
-TEST(VolumeWorkflow, TopologyChangesAreRefused)
+// with a neck of radius 0.01 as two balls: the boundary's components and genera must be the
+// input's. The two sides of a slit kept Mesh_3's protection of sharp edges going.
+TEST(VolumeWorkflow, DetailsFinerThanTheSizesAreRefused)
 {
   const auto pinched = [](double waist) {
     return surface_of_revolution([waist](double z) { return std::sqrt(std::max(0.0, 1 - z * z)) *
@@ -611,6 +638,14 @@ TEST(VolumeWorkflow, TopologyChangesAreRefused)
       return std::abs(z) <= length / 2 ? neck : std::max(neck, std::sqrt(std::max(0.0, 1 - from_centre * from_centre)));
     }, -length / 2 - 2, length / 2 + 2, 80, 32);
   expect_invalid([&] { DO::mesh_interior(dumbbell); }, "has 2 components of genera 0, 0, the surface 1 component of genus 0");
+
+  // The sides of a slit far narrower than the sizes (the facet distance is 0.00657 here) kept Mesh_3
+  // protecting their sharp edges for minutes; one of 0.05 meshes in a second.
+  expect_invalid([&] { DO::mesh_interior(split_ring(0.001)); },
+                 " apart, less than the facet distance (0.00657), and meet only farther away (the sides of a slit?)");
+  const C3t3 ring = DO::mesh_interior(split_ring(0.05));
+  expect_manifold_boundary_of_the_cells(ring);
+  EXPECT_EQ(DO::internal::boundary_genera(ring), std::vector<long>{0});
 
   // The genera of real surfaces of genus 0 to 2 are kept.
   DEMO_SURFACE(eight, "eight.off");

@@ -39,6 +39,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -213,6 +214,7 @@ struct Checked_surface
 
   Surface surface;   // the input moved by -offset, then scaled by `scale`
   std::vector<std::size_t> face_names;   // the input's index of each face of `surface`
+  std::vector<std::size_t> vertex_names; // the input's index of each vertex of `surface`
   std::vector<std::size_t> component;    // the connected component of each face of `surface`
   std::vector<double> component_volume, component_area;   // unscaled; a cavity's volume is negative
   double scale = 1;
@@ -255,6 +257,7 @@ struct Checked_surface
       if(compact.size() <= i) compact.resize(i + 1);
       compact[i] = points.size();
       points.emplace_back(x, y, z);
+      vertex_names.push_back(i);
     }
     for(auto h : halfedges(tm))
       if(is_border(h, tm))
@@ -934,6 +937,70 @@ closest_components(const Surface& surface, const std::vector<std::size_t>& compo
   return closest;
 }
 
+// Mesh_3 protects the sharp edges with balls that must not overlap unless they are neighbours on a
+// curve: where two parts of the sharp edges come closer than the sizes without meeting nearby (the
+// two sides of a thin slit, a hairpin), the balls shrink to the gap and their number grows without
+// bound (a split ring with a slit of 0.001: no end in five minutes). Returns the lowest pair of sharp
+// edges (by `surface`'s edge indices) closer than `distance`, neither joined through sharp edges that
+// come within 3 `distance` of the closer one's nearest point, and their distance; (0, 0, distance)
+// if none. The sharp edges are those the domain protects (PMP::detect_sharp_edges(), `angle`).
+template <class Surface>
+std::tuple<std::size_t, std::size_t, double> close_sharp_edges(const Surface& surface, double angle, double distance)
+{
+  using K = typename Kernel_traits<typename Surface::Point>::Kernel;
+  using Edge = typename Surface::Edge_index;
+  using Vertex = typename Surface::Vertex_index;
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::tuple<std::size_t, std::size_t, double> closest(0, 0, distance);
+  std::unordered_map<Edge, bool> sharp_of;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(surface, angle, boost::make_assoc_property_map(sharp_of));
+  std::vector<Edge> sharp;
+  std::unordered_map<Vertex, std::vector<Edge>> at;   // the sharp edges at each vertex
+  for(Edge e : edges(surface))
+    if(sharp_of[e]) {
+      sharp.push_back(e);
+      for(int k = 0; k < 2; ++k) at[surface.vertex(e, k)].push_back(e);
+    }
+  const auto segment = [&](Edge e) { return typename K::Segment_3(surface.point(surface.vertex(e, 0)), surface.point(surface.vertex(e, 1))); };
+  std::vector<Box> boxes;
+  for(Edge e : sharp) {
+    const Bbox_3 b = segment(e).bbox();
+    boxes.emplace_back(Bbox_3(b.xmin() - distance, b.ymin() - distance, b.zmin() - distance, b.xmax() + distance,
+                              b.ymax() + distance, b.zmax() + distance), std::size_t(e));
+  }
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+    const Edge e(a.info()), f(b.info());
+    for(int i = 0; i < 2; ++i)
+      for(int j = 0; j < 2; ++j)
+        if(surface.vertex(e, i) == surface.vertex(f, j)) return;
+    const auto se = segment(e), sf = segment(f);
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(se, sf)));
+    const std::tuple<std::size_t, std::size_t, double> pair((std::min)(a.info(), b.info()), (std::max)(a.info(), b.info()), d);
+    if(!(d < std::get<2>(closest) || (d == std::get<2>(closest) && d < distance && pair < closest))) return;
+    // The point of e nearest to f (of the segment's ends, or its projection), and a walk from e
+    // through the sharp edges within 3 `distance` of it.
+    typename K::Point_3 near = se.source();
+    double best = CGAL::to_double(CGAL::squared_distance(near, sf));
+    for(int n = 1; n <= 64; ++n) {   // (a sample suffices: the ball is 3 times the gap)
+      const auto p = se.source() + (se.target() - se.source()) * (n / 64.0);
+      if(const double d2 = CGAL::to_double(CGAL::squared_distance(p, sf)); d2 < best) { best = d2; near = p; }
+    }
+    const double reach = 3 * distance;
+    std::vector<Edge> stack{e};
+    std::unordered_set<Edge> seen{e};
+    while(!stack.empty()) {
+      const Edge g = stack.back();
+      stack.pop_back();
+      if(g == f) return;
+      for(int k = 0; k < 2; ++k)
+        for(Edge h : at[surface.vertex(g, k)])
+          if(seen.insert(h).second && CGAL::to_double(CGAL::squared_distance(near, segment(h))) < reach * reach) stack.push_back(h);
+    }
+    closest = pair;
+  });
+  return closest;
+}
+
 template <class NamedParameters>
 using Interior_mesh_traits_of = typename CGAL::internal_np::Lookup_named_param_def<
   CGAL::internal_np::geom_traits_t, NamedParameters, CGAL::Exact_predicates_inexact_constructions_kernel>::type;
@@ -1259,7 +1326,9 @@ that is not a triangle, a non-finite coordinate, a border edge, a non-manifold v
 degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
 (its mean thickness, 2 volume / area, is smaller) or has a component that is (2 |volume| / area
 of that component; the error names one of its faces), has two components closer than the facet
-distance (the error names a face of each), if a size is not a positive finite
+distance (the error names a face of each) or two sharp edges (those protected, see
+`sharp_edge_angle`) closer than it that meet only farther away, such as the two sides of a slit
+(Mesh_3's protection of the sharp edges would not end; the error names their vertices), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
@@ -1335,6 +1404,24 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                           std::to_string(checked.face_names[g]) + " of two components of the surface" + text +
                           ": Mesh_3 would not keep them apart; give sizes below their distance (facet distance, "
                           "facet size, cell size), or move them apart");
+    }
+  }
+  if(sizes.sharp_edge_angle < 180) {
+    const double scaled = checked.scale * sizes.facet_distance;
+    const auto [e, f, d] = internal::close_sharp_edges(checked.surface, sizes.sharp_edge_angle, scaled);
+    if(d < scaled) {
+      const auto name = [&](std::size_t edge) {
+        const auto h = checked.surface.halfedge(typename Types::Surface::Edge_index(edge));
+        return "vertices " + std::to_string(checked.vertex_names[std::size_t(source(h, checked.surface))]) + ", " +
+               std::to_string(checked.vertex_names[std::size_t(target(h, checked.surface))]);
+      };
+      char text[200];
+      std::snprintf(text, sizeof text, " are %.3g apart, less than the facet distance (%.3g), and meet only farther away",
+                    d / checked.scale, sizes.facet_distance);
+      throw Invalid_input("mesh_interior: the sharp edges of the surface at " + name(e) + " and at " + name(f) + text +
+                          " (the sides of a slit?): Mesh_3's protection of the sharp edges would not end; give sizes "
+                          "below their distance (facet distance, facet size, cell size), or a larger sharp_edge_angle "
+                          "(180 protects no edge)");
     }
   }
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +
