@@ -642,7 +642,8 @@ TEST(VolumeWorkflow, DetailsFinerThanTheSizesAreRefused)
   // The sides of a slit far narrower than the sizes (the facet distance is 0.00657 here) kept Mesh_3
   // protecting their sharp edges for minutes; one of 0.05 meshes in a second.
   expect_invalid([&] { DO::mesh_interior(split_ring(0.001)); },
-                 " apart, less than the facet distance (0.00657), and meet only farther away (the sides of a slit?)");
+                 " apart, less than the facet distance (0.00657), along more than the edge size (0.0657), and meet only "
+                 "farther away (the sides of a slit?)");
   const C3t3 ring = DO::mesh_interior(split_ring(0.05));
   expect_manifold_boundary_of_the_cells(ring);
   EXPECT_EQ(DO::internal::boundary_genera(ring), std::vector<long>{0});

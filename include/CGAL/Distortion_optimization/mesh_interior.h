@@ -940,12 +940,15 @@ closest_components(const Surface& surface, const std::vector<std::size_t>& compo
 // Mesh_3 protects the sharp edges with balls that must not overlap unless they are neighbours on a
 // curve: where two parts of the sharp edges come closer than the sizes without meeting nearby (the
 // two sides of a thin slit, a hairpin), the balls shrink to the gap and their number grows without
-// bound (a split ring with a slit of 0.001: no end in five minutes). Returns the lowest pair of sharp
-// edges (by `surface`'s edge indices) closer than `distance`, neither joined through sharp edges that
-// come within 3 `distance` of the closer one's nearest point, and their distance; (0, 0, distance)
-// if none. The sharp edges are those the domain protects (PMP::detect_sharp_edges(), `angle`).
+// bound (a split ring with a slit of 0.001: no end in five minutes). Short close stretches are
+// harmless (femur.off and dino.off have sharp edges 10^-4 apart over a fifth of the edge size).
+// Returns the lowest pair of sharp edges (by `surface`'s edge indices) closer than `distance` along
+// more than `length` of each, neither joined through sharp edges that come within 3 `distance` of
+// the one's point nearest the other, and their distance; (0, 0, distance) if none. The sharp edges
+// are those the domain protects (PMP::detect_sharp_edges(), `angle`).
 template <class Surface>
-std::tuple<std::size_t, std::size_t, double> close_sharp_edges(const Surface& surface, double angle, double distance)
+std::tuple<std::size_t, std::size_t, double> close_sharp_edges(const Surface& surface, double angle, double distance,
+                                                               double length)
 {
   using K = typename Kernel_traits<typename Surface::Point>::Kernel;
   using Edge = typename Surface::Edge_index;
@@ -977,14 +980,24 @@ std::tuple<std::size_t, std::size_t, double> close_sharp_edges(const Surface& su
     const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(se, sf)));
     const std::tuple<std::size_t, std::size_t, double> pair((std::min)(a.info(), b.info()), (std::max)(a.info(), b.info()), d);
     if(!(d < std::get<2>(closest) || (d == std::get<2>(closest) && d < distance && pair < closest))) return;
-    // The point of e nearest to f (of the segment's ends, or its projection), and a walk from e
-    // through the sharp edges within 3 `distance` of it.
+    // The length of each within `distance` of the other and the point of e nearest to f, sampled
+    // (a sample suffices: the walk's ball is 3 times the gap).
     typename K::Point_3 near = se.source();
-    double best = CGAL::to_double(CGAL::squared_distance(near, sf));
-    for(int n = 1; n <= 64; ++n) {   // (a sample suffices: the ball is 3 times the gap)
-      const auto p = se.source() + (se.target() - se.source()) * (n / 64.0);
-      if(const double d2 = CGAL::to_double(CGAL::squared_distance(p, sf)); d2 < best) { best = d2; near = p; }
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t close_e = 0, close_f = 0;
+    constexpr int samples = 64;
+    for(int n = 0; n <= samples; ++n) {
+      const auto p = se.source() + (se.target() - se.source()) * (double(n) / samples);
+      const double d2 = CGAL::to_double(CGAL::squared_distance(p, sf));
+      if(d2 < best) { best = d2; near = p; }
+      close_e += d2 < distance * distance ? 1 : 0;
+      close_f += CGAL::to_double(CGAL::squared_distance(sf.source() + (sf.target() - sf.source()) * (double(n) / samples), se)) <
+                 distance * distance ? 1 : 0;
     }
+    const auto run = [&](const typename K::Segment_3& g, std::size_t close) {
+      return std::sqrt(CGAL::to_double(g.squared_length())) * close / (samples + 1);
+    };
+    if(run(se, close_e) <= length || run(sf, close_f) <= length) return;
     const double reach = 3 * distance;
     std::vector<Edge> stack{e};
     std::unordered_set<Edge> seen{e};
@@ -1327,8 +1340,9 @@ degenerate face or two faces that cross, encloses no volume, is thinner than the
 (its mean thickness, 2 volume / area, is smaller) or has a component that is (2 |volume| / area
 of that component; the error names one of its faces), has two components closer than the facet
 distance (the error names a face of each) or two sharp edges (those protected, see
-`sharp_edge_angle`) closer than it that meet only farther away, such as the two sides of a slit
-(Mesh_3's protection of the sharp edges would not end; the error names their vertices), if a size is not a positive finite
+`sharp_edge_angle`) closer than it along more than the edge size that meet only farther away,
+such as the two sides of a slit (Mesh_3 would protect them with balls no larger than the gap,
+for minutes or without end; the error names their vertices), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
 `maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
@@ -1408,7 +1422,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   }
   if(sizes.sharp_edge_angle < 180) {
     const double scaled = checked.scale * sizes.facet_distance;
-    const auto [e, f, d] = internal::close_sharp_edges(checked.surface, sizes.sharp_edge_angle, scaled);
+    const auto [e, f, d] = internal::close_sharp_edges(checked.surface, sizes.sharp_edge_angle, scaled, checked.scale * sizes.edge_size);
     if(d < scaled) {
       const auto name = [&](std::size_t edge) {
         const auto h = checked.surface.halfedge(typename Types::Surface::Edge_index(edge));
@@ -1416,12 +1430,12 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                std::to_string(checked.vertex_names[std::size_t(target(h, checked.surface))]);
       };
       char text[200];
-      std::snprintf(text, sizeof text, " are %.3g apart, less than the facet distance (%.3g), and meet only farther away",
-                    d / checked.scale, sizes.facet_distance);
+      std::snprintf(text, sizeof text, " are %.3g apart, less than the facet distance (%.3g), along more than the edge size (%.3g), and meet only farther away",
+                    d / checked.scale, sizes.facet_distance, sizes.edge_size);
       throw Invalid_input("mesh_interior: the sharp edges of the surface at " + name(e) + " and at " + name(f) + text +
-                          " (the sides of a slit?): Mesh_3's protection of the sharp edges would not end; give sizes "
-                          "below their distance (facet distance, facet size, cell size), or a larger sharp_edge_angle "
-                          "(180 protects no edge)");
+                          " (the sides of a slit?): Mesh_3 would protect them with balls no larger than the gap, for "
+                          "minutes or without end; give sizes below their distance (facet distance, facet size, cell "
+                          "size), or a larger sharp_edge_angle (180 protects no edge)");
     }
   }
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +

@@ -549,11 +549,7 @@ private:
     return true;
   }
 
-  static auto point(const Vector<n>& x)
-  {
-    if constexpr(n == 2) return K::Point_2(x[0], x[1]);
-    else return K::Point_3(x[0], x[1], x[2]);
-  }
+  static auto point(const Vector<n>& x) { return to_point<K>(x); }
   static auto point(std::uint32_t v, const std::vector<Vector<n>>& t) { return point(t[v]); }
 
   // A face with coincident (2D) or collinear (3D) vertices: its cell is degenerate, so no injectivity.

@@ -162,10 +162,7 @@ void check_size_is_held(const Optimization_problem<n>& problem, const Measure& m
   if(!(measure.template value<n>(Singular_values<n>::Constant(0.5)) < value_on_rigid_maps<n>(measure))) return;
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const auto& x = problem.map.target;
-  const auto point = [&](std::uint32_t v) {
-    if constexpr(n == 2) return K::Point_2(x[v][0], x[v][1]);
-    else return K::Point_3(x[v][0], x[v][1], x[v][2]);
-  };
+  const auto point = [&](std::uint32_t v) { return to_point<K>(x[v]); };
   // Whether v is off the affine hull of s (k points, affinely independent).
   const auto independent = [&](const std::array<std::uint32_t, n + 1>& s, int k, std::uint32_t v) {
     if(k == 0) return true;

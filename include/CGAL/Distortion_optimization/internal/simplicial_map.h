@@ -153,6 +153,14 @@ inline Matrix<2> triangle_frame_edges(const Vector<3>& e1, const Vector<3>& e2)
   return Dm;
 }
 
+// The point of the traits' kernel at x (a Point_2 or a Point_3).
+template <class GeomTraits, int n>
+auto to_point(const Vector<n>& x)
+{
+  if constexpr(n == 2) return typename GeomTraits::Point_2(x[0], x[1]);
+  else return typename GeomTraits::Point_3(x[0], x[1], x[2]);
+}
+
 // Orientation of the target image of cell c by the geometric traits' predicate (exact with CGAL's
 // kernels, which is what the guarantees rest on): +1, 0 or -1.
 template <int n, class GeomTraits>
@@ -160,13 +168,9 @@ int target_orientation(const Simplicial_map<n>& map, std::size_t c, const GeomTr
 {
   const auto& cell = map.cells[c];
   const auto& x = map.target;
-  if constexpr(n == 2) {
-    auto p = [&](int i) { return typename GeomTraits::Point_2(x[cell[i]][0], x[cell[i]][1]); };
-    return static_cast<int>(traits.orientation_2_object()(p(0), p(1), p(2)));
-  } else {
-    auto p = [&](int i) { return typename GeomTraits::Point_3(x[cell[i]][0], x[cell[i]][1], x[cell[i]][2]); };
-    return static_cast<int>(traits.orientation_3_object()(p(0), p(1), p(2), p(3)));
-  }
+  const auto p = [&](int i) { return to_point<GeomTraits>(x[cell[i]]); };
+  if constexpr(n == 2) return static_cast<int>(traits.orientation_2_object()(p(0), p(1), p(2)));
+  else return static_cast<int>(traits.orientation_3_object()(p(0), p(1), p(2), p(3)));
 }
 
 // A target cell is inverted (or degenerate) unless its orientation is the source's.
