@@ -764,7 +764,7 @@ std::size_t flip_flat_cells(C3T3& c3t3)
   const auto flip_away = [&](Cell_handle c) {
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j)
-        if(around(c, i, j).size() == 3 && flip_edge(c, i, j)) return true;
+        if(flip_edge(c, i, j)) return true;   // (false, untouched, unless three cells are around)
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j) {
         const Vertex_handle a = c->vertex(i), b = c->vertex(j);
@@ -1116,13 +1116,15 @@ std::tuple<std::size_t, std::size_t, double> close_sharp_edges(const Surface& su
     double best = std::numeric_limits<double>::infinity();
     std::size_t close_e = 0, close_f = 0;
     constexpr int samples = 64;
+    const auto sample = [&](const typename K::Segment_3& g, int n) {
+      return g.source() + (g.target() - g.source()) * (double(n) / samples);
+    };
     for(int n = 0; n <= samples; ++n) {
-      const auto p = se.source() + (se.target() - se.source()) * (double(n) / samples);
+      const auto p = sample(se, n);
       const double d2 = CGAL::to_double(CGAL::squared_distance(p, sf));
       if(d2 < best) { best = d2; near = p; }
       close_e += d2 < distance * distance ? 1 : 0;
-      close_f += CGAL::to_double(CGAL::squared_distance(sf.source() + (sf.target() - sf.source()) * (double(n) / samples), se)) <
-                 distance * distance ? 1 : 0;
+      close_f += CGAL::to_double(CGAL::squared_distance(sample(sf, n), se)) < distance * distance ? 1 : 0;
     }
     const auto run = [&](const typename K::Segment_3& g, std::size_t close) {
       return std::sqrt(CGAL::to_double(g.squared_length())) * close / (samples + 1);
