@@ -74,31 +74,33 @@ struct Row
 
 const double checkpoints[] = {0.25, 0.5, 1, 2};
 
-// The energy reached at each checkpoint, then the seconds to within 0.3% of `best` (the lowest
-// final energy of the pipeline's configurations), the closeness asked of Table 1's case (issue 18).
-void print_time_to_energy(const char* pipeline, const char* step, int threads, const Row& row, double best)
-{
-  if(!row.error.empty()) return;
-  std::printf("%-12s %-9s %7d", pipeline, step, threads);
-  for(double t : checkpoints) {
-    double reached = std::numeric_limits<double>::quiet_NaN();   // no iteration done yet
-    for(const auto& [seconds, energy] : row.trace)
-      if(seconds <= t) reached = energy;
-    std::printf(" %9.5f", reached);
-  }
-  const auto close = std::find_if(row.trace.begin(), row.trace.end(), [&](const auto& p) { return p.second <= 1.003 * best; });
-  if(close == row.trace.end()) std::printf(" %9s\n", "-");
-  else std::printf(" %9.3f\n", close->first);
-}
+const int thread_counts[] = {1, 2};
+const char* const solver_names[] = {"laplacian", "newton"};
 
-// The lowest final energy of the rows that ran.
-double best_energy(const Row (&rows)[2][2])
+// Per configuration of a pipeline that ran: the energy reached at each checkpoint, then the
+// seconds to within 0.3% of the lowest final energy of the pipeline's configurations, the
+// closeness asked of Table 1's case (issue 18).
+void print_times_to_energy(const char* pipeline, const Row (&rows)[2][2])
 {
   double best = std::numeric_limits<double>::infinity();
   for(const auto& by_solver : rows)
     for(const Row& row : by_solver)
       if(row.error.empty()) best = std::min(best, row.r.final_energy);
-  return best;
+  for(int s = 0; s < 2; ++s)
+    for(int t = 0; t < 2; ++t) {
+      const Row& row = rows[s][t];
+      if(!row.error.empty()) continue;
+      std::printf("%-12s %-9s %7d", pipeline, solver_names[s], thread_counts[t]);
+      for(double checkpoint : checkpoints) {
+        double reached = std::numeric_limits<double>::quiet_NaN();   // no iteration done yet
+        for(const auto& [seconds, energy] : row.trace)
+          if(seconds <= checkpoint) reached = energy;
+        std::printf(" %9.5f", reached);
+      }
+      const auto close = std::find_if(row.trace.begin(), row.trace.end(), [&](const auto& p) { return p.second <= 1.003 * best; });
+      if(close == row.trace.end()) std::printf(" %9s\n", "-");
+      else std::printf(" %9.3f\n", close->first);
+    }
 }
 
 void print_header()
@@ -172,7 +174,6 @@ int main(int argc, char** argv)
   const int repeats = argc > 1 ? std::max(1, std::stoi(argv[1])) : 3;
   const std::string filename = argc > 2 ? argv[2] : DISTORTION_OPTIMIZATION_DATA_DIR "/blobby.off";
   const double ball_volume = 4 * CGAL_PI / 3;
-  const int thread_counts[] = {1, 2};
 
   try {
     // The surface pipeline.
@@ -204,7 +205,6 @@ int main(int argc, char** argv)
                 "volume-weighted means; E start is after untangling; gyroid C, K: area-weighted means\n", repeats);
 
     const DO::Global_solver solvers[] = {DO::Global_solver::REWEIGHTED_LAPLACIAN, DO::Global_solver::PROJECTED_NEWTON};
-    const char* solver_names[] = {"laplacian", "newton"};
     Row surface_rows[2][2], cube_rows[2][2];
     for(int repeat = 0; repeat < repeats; ++repeat)
       for(int s = 0; s < 2; ++s)
@@ -242,12 +242,8 @@ int main(int argc, char** argv)
     std::printf("\n%-12s %-9s %7s", "time to E", "step", "threads");
     for(double t : checkpoints) std::printf(" %8.2fs", t);
     std::printf(" %9s\n", "s to 0.3%");
-    for(int s = 0; s < 2; ++s)
-      for(int t = 0; t < 2; ++t)
-        print_time_to_energy("surface", solver_names[s], thread_counts[t], surface_rows[s][t], best_energy(surface_rows));
-    for(int s = 0; s < 2; ++s)
-      for(int t = 0; t < 2; ++t)
-        print_time_to_energy("gyroid cube", solver_names[s], thread_counts[t], cube_rows[s][t], best_energy(cube_rows));
+    print_times_to_energy("surface", surface_rows);
+    print_times_to_energy("gyroid cube", cube_rows);
   } catch(const DO::Invalid_input& e) {
     std::fprintf(stderr, "Error: %s\n", e.what());
     return 1;
