@@ -807,11 +807,11 @@ TEST(VolumeWorkflow, StartMapsAreTheSameAtAnyScale)
 // results 1e-4 apart after 10 iterations). Now the same map, scaled, bit for bit.
 TEST(VolumeWorkflow, UntangledBallMapIsTheSameAtAnyScale)
 {
-  DEMO_SURFACE(ellipsoid, "ellipsoid.off");
+  const Surface cube = triangulated_cube();   // its ball map flattens cells across its edges
   std::vector<Point> reference;
   for(const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 0}, {2, 0}, {0, 2}, {-60, 0}, {60, -3}, {5, 7}}) {
     const double source_factor = std::ldexp(1., a), target_factor = std::ldexp(1., b);
-    const C3t3 c3t3 = DO::mesh_interior(scaled_surface(ellipsoid, source_factor));
+    const C3t3 c3t3 = DO::mesh_interior(scaled_surface(cube, source_factor));
     Targets ball;
     ASSERT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)), 0u);
     for(auto& [v, p] : ball) p = Point(p.x() * target_factor, p.y() * target_factor, p.z() * target_factor);
@@ -893,6 +893,50 @@ TEST(VolumeWorkflow, BallMapOfATetrahedronIsUntangledWithItsBoundarySliding)
   EXPECT_LT(r.untangle_iterations, 10u);
   EXPECT_LT(r.final_energy, r.initial_energy);
   on_the_unit_sphere(c3t3, ball);
+}
+
+// star_shaped_to_unit_ball() commutes with linear maps up to a rotation: its whitening (the
+// inverse square root of the second moment) takes a domain and a linear image of it to one domain
+// up to a rotation, and keeps the ratio r / R(u) along each ray. So a 4 x 1 x 1 box and the same
+// tetrahedra squeezed into a cube have images with the same dot products. Without the whitening
+// the box's long sides went onto narrow cones about its axis (dot products up to 1.2 apart), and
+// the tool could not untangle its ball map (test_cli.cpp).
+TEST(VolumeWorkflow, BallMapOfALinearImageIsTheSameUpToARotation)
+{
+  Surface box = triangulated_cube();
+  for(auto v : box.vertices()) box.point(v) = Point(4 * box.point(v).x(), box.point(v).y(), box.point(v).z());
+  const C3t3 long_box = DO::mesh_interior(box, DOP::cell_size(0.2));
+  std::vector<std::array<double, 3>> points;   // the box's vertices, x divided by 4 (exactly)
+  std::vector<std::array<std::size_t, 4>> cells;
+  std::unordered_map<Vertex_handle, std::size_t> index;
+  for(auto c = long_box.cells_in_complex_begin(); c != long_box.cells_in_complex_end(); ++c) {
+    std::array<std::size_t, 4> cell;
+    for(int i = 0; i < 4; ++i) {
+      const auto [at, added] = index.emplace(c->vertex(i), points.size());
+      if(added) {
+        const Point p = position(long_box, c, i);
+        points.push_back({p.x() / 4, p.y(), p.z()});
+      }
+      cell[i] = at->second;
+    }
+    cells.push_back(cell);
+  }
+  C3t3 cube;
+  const std::vector<Vertex_handle> handles = DO::c3t3_from_tetrahedra(points, cells, cube);
+  Targets a, b;
+  DO::star_shaped_to_unit_ball(long_box, Target_map(a), DO::volume_centroid(long_box));
+  DO::star_shaped_to_unit_ball(cube, Target_map(b), DO::volume_centroid(cube));
+  std::vector<K::Vector_3> image_a(points.size()), image_b(points.size());
+  for(const auto& [v, i] : index) {
+    image_a[i] = a.at(v) - CGAL::ORIGIN;
+    image_b[i] = b.at(handles[i]) - CGAL::ORIGIN;
+  }
+  ASSERT_GT(points.size(), 500u);
+  double largest = 0;
+  for(std::size_t i = 0; i < points.size(); i += 3)
+    for(std::size_t j = i; j < points.size(); j += 17)
+      largest = std::max(largest, std::abs(image_a[i] * image_a[j] - image_b[i] * image_b[j]));
+  EXPECT_LT(largest, 1e-9);
 }
 
 // The ray from the centre through a boundary vertex leaves the domain at that vertex, shared by
