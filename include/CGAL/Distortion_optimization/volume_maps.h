@@ -209,12 +209,12 @@ void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C
 /// transformed by the symmetric matrix `A` that makes its inertia about `center` the same about
 /// every axis (the inverse square root of its second moment; a ratio `r / R(u)` along a ray is
 /// kept by any linear map). On a domain as wide in every direction, such as a cube or a ball about
-/// its centre, `A` is a multiple of the identity and the map is theirs. An elongated domain is no
-/// longer squeezed across its length onto narrow cones about its axis: the tool could not untangle
-/// the ball maps of 4 x 1 x 1, 20 x 1 x 1 and 100 x 1 x 1 boxes with their boundary sliding (it
-/// gave up after 4 s, 179 s and 70 s); with `A` each is untangled in 1.4 s or less. The domain
-/// must be star-shaped about `center`: `center` on the inner side of the plane of every boundary
-/// facet (exact predicates), checked before anything is written.
+/// its centre, `A` is a multiple of the identity up to the mesh's own asymmetry, and the map is
+/// theirs. An elongated domain is no longer squeezed across its length onto narrow cones about its
+/// axis: the tool could not untangle the ball maps of 4 x 1 x 1, 20 x 1 x 1 and 100 x 1 x 1 boxes
+/// with their boundary sliding (it gave up after 4 s, 179 s and 70 s); with `A` each is untangled
+/// in 1.4 s or less. The domain must be star-shaped about `center`: `center` on the inner side of
+/// the plane of every boundary facet (exact predicates), checked before anything is written.
 ///
 /// Even then the map is not always valid: near a sharp edge of the domain, a tetrahedron whose four
 /// vertices are on the boundary, on both sides of the edge, can come out flat or inverted (the
