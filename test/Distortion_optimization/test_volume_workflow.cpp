@@ -41,7 +41,6 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -120,6 +119,33 @@ std::vector<Point> cell_points(const C3t3& c3t3)
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
     for(int i = 0; i < 4; ++i) points.push_back(position(c3t3, c, i));
   return points;
+}
+
+// The cells of the complex as a tetrahedron soup: its vertices in the order of first use (each
+// one's index in `index`), the cells as indices into them.
+struct Tetrahedra
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> cells;
+  std::unordered_map<Vertex_handle, std::size_t> index;
+};
+
+Tetrahedra tetrahedra_of(const C3t3& c3t3)
+{
+  Tetrahedra t;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<std::size_t, 4> cell;
+    for(int i = 0; i < 4; ++i) {
+      const auto [at, added] = t.index.emplace(c->vertex(i), t.points.size());
+      if(added) {
+        const Point p = position(c3t3, c, i);
+        t.points.push_back({p.x(), p.y(), p.z()});
+      }
+      cell[i] = at->second;
+    }
+    t.cells.push_back(cell);
+  }
+  return t;
 }
 
 std::size_t inverted(const C3t3& c3t3, const Targets& target)
@@ -906,28 +932,16 @@ TEST(VolumeWorkflow, BallMapOfALinearImageIsTheSameUpToARotation)
   Surface box = triangulated_cube();
   for(auto v : box.vertices()) box.point(v) = Point(4 * box.point(v).x(), box.point(v).y(), box.point(v).z());
   const C3t3 long_box = DO::mesh_interior(box, DOP::cell_size(0.2));
-  std::vector<std::array<double, 3>> points;   // the box's vertices, x divided by 4 (exactly)
-  std::vector<std::array<std::size_t, 4>> cells;
-  std::unordered_map<Vertex_handle, std::size_t> index;
-  for(auto c = long_box.cells_in_complex_begin(); c != long_box.cells_in_complex_end(); ++c) {
-    std::array<std::size_t, 4> cell;
-    for(int i = 0; i < 4; ++i) {
-      const auto [at, added] = index.emplace(c->vertex(i), points.size());
-      if(added) {
-        const Point p = position(long_box, c, i);
-        points.push_back({p.x() / 4, p.y(), p.z()});
-      }
-      cell[i] = at->second;
-    }
-    cells.push_back(cell);
-  }
+  Tetrahedra squeezed = tetrahedra_of(long_box);
+  for(auto& p : squeezed.points) p[0] /= 4;   // exactly
+  const auto& points = squeezed.points;
   C3t3 cube;
-  const std::vector<Vertex_handle> handles = DO::c3t3_from_tetrahedra(points, cells, cube);
+  const std::vector<Vertex_handle> handles = DO::c3t3_from_tetrahedra(points, squeezed.cells, cube);
   Targets a, b;
   DO::star_shaped_to_unit_ball(long_box, Target_map(a), DO::volume_centroid(long_box));
   DO::star_shaped_to_unit_ball(cube, Target_map(b), DO::volume_centroid(cube));
   std::vector<K::Vector_3> image_a(points.size()), image_b(points.size());
-  for(const auto& [v, i] : index) {
+  for(const auto& [v, i] : squeezed.index) {
     image_a[i] = a.at(v) - CGAL::ORIGIN;
     image_b[i] = b.at(handles[i]) - CGAL::ORIGIN;
   }
@@ -971,22 +985,9 @@ TEST(VolumeWorkflow, BallMapFindsTheExitOfRaysThroughBoundaryVertices)
 )");
   Surface cube;
   ASSERT_TRUE(CGAL::IO::read_OFF(off, cube));
-  const C3t3 meshed = DO::mesh_interior(cube, DOP::cell_size(0.1));
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> tets;
-  std::map<Tr::Vertex_handle, std::size_t> index;
-  for(auto c = meshed.cells_in_complex_begin(); c != meshed.cells_in_complex_end(); ++c) {
-    std::array<std::size_t, 4> tet;
-    for(int i = 0; i < 4; ++i) {
-      const auto [it, fresh] = index.emplace(c->vertex(i), points.size());
-      const Point p = position(meshed, c, i);
-      if(fresh) points.push_back({p.x(), p.y(), p.z()});
-      tet[i] = it->second;
-    }
-    tets.push_back(tet);
-  }
+  const Tetrahedra meshed = tetrahedra_of(DO::mesh_interior(cube, DOP::cell_size(0.1)));
   C3t3 c3t3;
-  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  DO::c3t3_from_tetrahedra(meshed.points, meshed.cells, c3t3);
   Targets ball;
   ASSERT_NO_THROW(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)));
   // Every boundary vertex on the unit sphere, every other one inside.
