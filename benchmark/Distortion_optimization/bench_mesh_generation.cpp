@@ -111,17 +111,12 @@ struct Soup
 
   Soup(const Volume& volume, const Targets& positions)
   {
-    for(auto c = volume.cells_in_complex_begin(); c != volume.cells_in_complex_end(); ++c) {
-      std::array<std::size_t, 4> t;
-      for(int i = 0; i < 4; ++i) {
-        auto it = index.find(c->vertex(i));
-        if(it == index.end()) {
-          it = index.emplace(c->vertex(i), points.size()).first;
-          points.push_back(positions.at(c->vertex(i)));
-        }
-        t[i] = it->second;
-      }
-      cells.push_back(t);
+    std::vector<std::array<double, 3>> xyz;
+    const auto handles = DO::tetrahedra_from_c3t3(
+        volume, xyz, cells, CGAL::parameters::vertex_point_map(boost::const_associative_property_map<Targets>(positions)));
+    for(std::size_t i = 0; i < xyz.size(); ++i) {
+      points.emplace_back(xyz[i][0], xyz[i][1], xyz[i][2]);
+      index.emplace(handles[i], i);
     }
   }
 };

@@ -540,30 +540,6 @@ int run_triangles(const Command_line& c)
   return 0;
 }
 
-// The tetrahedra of a Mesh_3 complex as a soup: the complex's vertices in the order of first use.
-template <class Complex>
-DO::IO::Tetrahedron_soup soup_of(const Complex& complex)
-{
-  const auto& tr = complex.triangulation();
-  auto point = tr.geom_traits().construct_point_3_object();
-  DO::IO::Tetrahedron_soup soup;
-  std::unordered_map<typename Complex::Triangulation::Vertex_handle, std::size_t> index;
-  for(auto c = complex.cells_in_complex_begin(); c != complex.cells_in_complex_end(); ++c) {
-    std::array<std::size_t, 4> cell;
-    for(int i = 0; i < 4; ++i) {
-      const auto inserted = index.emplace(c->vertex(i), soup.points.size());
-      if(inserted.second) {
-        const K::Point_3 p = point(tr.point(c, i));
-        soup.points.push_back({p.x(), p.y(), p.z()});
-      }
-      cell[i] = inserted.first->second;
-    }
-    soup.cells.push_back(cell);
-    soup.labels.push_back(1);
-  }
-  return soup;
-}
-
 // The source tetrahedra: read from a .mesh, or the inside of a closed surface meshed by Mesh_3.
 DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh_seconds)
 {
@@ -572,8 +548,9 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
   const Mesh surface = to_mesh(DO::IO::read_triangle_soup(c.source), c.source);
   DO::IO::Tetrahedron_soup soup;
   try {
-    soup = soup_of(c.cell_size > 0 ? DO::mesh_interior(surface, DO::parameters::cell_size(c.cell_size))
-                                   : DO::mesh_interior(surface));
+    DO::tetrahedra_from_c3t3(c.cell_size > 0 ? DO::mesh_interior(surface, DO::parameters::cell_size(c.cell_size))
+                                             : DO::mesh_interior(surface), soup.points, soup.cells);
+    soup.labels.assign(soup.cells.size(), 1);
   } catch(const DO::Invalid_input& e) {
     // The library's remedies name its parameters; the tool's user has --cell-size (the facet size,
     // and ten times the facet distance).

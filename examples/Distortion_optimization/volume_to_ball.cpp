@@ -16,6 +16,7 @@
 #include "volume_examples.h"
 
 #include <CGAL/Distortion_optimization/IO/vtu.h>
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/compute_distortion.h>
@@ -57,21 +58,10 @@ std::vector<double> distortion_per_cell(const C3t3& c3t3, const Targets& target,
 void write_map(const std::string& path, const C3t3& c3t3, const Targets& target,
                const std::vector<std::pair<std::string, std::vector<double>>>& cell_data)
 {
-  std::unordered_map<Tr::Vertex_handle, std::size_t> index;
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> cells;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-    std::array<std::size_t, 4> cell;
-    for(int i = 0; i < 4; ++i) {
-      const auto inserted = index.emplace(c->vertex(i), points.size());
-      if(inserted.second) {
-        const Point& q = target.at(c->vertex(i));
-        points.push_back({q.x(), q.y(), q.z()});
-      }
-      cell[i] = inserted.first->second;
-    }
-    cells.push_back(cell);
-  }
+  DO::tetrahedra_from_c3t3(c3t3, points, cells,
+                           CGAL::parameters::vertex_point_map(boost::const_associative_property_map<Targets>(target)));
   DO::IO::write_VTU(path, points, cells, cell_data);
 }
 

@@ -27,9 +27,11 @@
 #include <boost/property_map/property_map.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -202,6 +204,65 @@ TEST(TetrahedralMeshes, TetgenFilesAreReadBackInTheirOrder)
   std::remove((stem + ".node").c_str());
   EXPECT_THROW(DO::IO::read_tetrahedron_soup(stem + ".ele"), DO::Invalid_input);   // the pair is needed
   std::remove((stem + ".ele").c_str());
+}
+
+TEST(TetrahedralMeshes, TetrahedraFromC3t3IsTheConverseOfC3t3FromTetrahedra)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  tetgen_cube(0.05, points, tets);
+  C3t3 c3t3;
+  const auto handles = DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  std::unordered_map<Vertex_handle, std::size_t> input_index;
+  for(std::size_t i = 0; i < handles.size(); ++i)
+    if(handles[i] != Vertex_handle()) input_index[handles[i]] = i;
+
+  std::vector<std::array<double, 3>> out_points = {{7, 7, 7}};   // cleared first
+  std::vector<std::array<std::size_t, 4>> out_tets;
+  const auto out_handles = DO::tetrahedra_from_c3t3(c3t3, out_points, out_tets);
+  ASSERT_EQ(out_points.size(), input_index.size());
+  ASSERT_EQ(out_handles.size(), out_points.size());
+  ASSERT_EQ(out_tets.size(), tets.size());
+  // Each point is its vertex's input point; the tetrahedra are the input's (as vertex sets),
+  // positively oriented, and the points are numbered in the order the cells first reach them.
+  std::vector<std::size_t> input_of(out_points.size());
+  for(std::size_t i = 0; i < out_points.size(); ++i) {
+    input_of[i] = input_index.at(out_handles[i]);
+    EXPECT_EQ(out_points[i], points[input_of[i]]);
+  }
+  auto sorted = [](std::array<std::size_t, 4> t) { std::sort(t.begin(), t.end()); return t; };
+  std::set<std::array<std::size_t, 4>> input_cells, output_cells;
+  for(const auto& t : tets) input_cells.insert(sorted(t));
+  std::size_t next = 0;
+  for(const auto& t : out_tets) {
+    auto P = [&](int k) { return Point_3(out_points[t[k]][0], out_points[t[k]][1], out_points[t[k]][2]); };
+    EXPECT_EQ(CGAL::orientation(P(0), P(1), P(2), P(3)), CGAL::POSITIVE);
+    for(std::size_t v : t) {
+      ASSERT_LE(v, next);
+      if(v == next) ++next;
+    }
+    output_cells.insert(sorted({input_of[t[0]], input_of[t[1]], input_of[t[2]], input_of[t[3]]}));
+  }
+  EXPECT_EQ(output_cells, input_cells);
+
+  // With a target map: the image's points, the same tetrahedra.
+  Target_storage image;
+  for(Vertex_handle v : out_handles) image[v] = radial(v->point().point());
+  std::vector<std::array<double, 3>> image_points;
+  std::vector<std::array<std::size_t, 4>> image_tets;
+  EXPECT_EQ(DO::tetrahedra_from_c3t3(c3t3, image_points, image_tets, CGAL::parameters::vertex_point_map(Target_map(image))),
+            out_handles);
+  EXPECT_EQ(image_tets, out_tets);
+  for(std::size_t i = 0; i < image_points.size(); ++i) {
+    const Point_3 q = radial(Point_3(out_points[i][0], out_points[i][1], out_points[i][2]));
+    EXPECT_EQ(image_points[i], (std::array<double, 3>{q.x(), q.y(), q.z()}));
+  }
+
+  // A Mesh_3 complex: only the cells in the complex, not the triangulation's others outside it.
+  const C3t3 sphere = mesh_sphere(0.3);
+  ASSERT_LT(sphere.number_of_cells_in_complex(), sphere.triangulation().number_of_finite_cells());
+  DO::tetrahedra_from_c3t3(sphere, out_points, out_tets);
+  EXPECT_EQ(out_tets.size(), sphere.number_of_cells_in_complex());
 }
 
 TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)

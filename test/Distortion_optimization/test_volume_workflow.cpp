@@ -121,30 +121,18 @@ std::vector<Point> cell_points(const C3t3& c3t3)
   return points;
 }
 
-// The cells of the complex as a tetrahedron soup: its vertices in the order of first use (each
-// one's index in `index`), the cells as indices into them.
+// The cells of the complex as a tetrahedron soup and the handle of each of its points.
 struct Tetrahedra
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> cells;
-  std::unordered_map<Vertex_handle, std::size_t> index;
+  std::vector<Vertex_handle> handles;
 };
 
 Tetrahedra tetrahedra_of(const C3t3& c3t3)
 {
   Tetrahedra t;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-    std::array<std::size_t, 4> cell;
-    for(int i = 0; i < 4; ++i) {
-      const auto [at, added] = t.index.emplace(c->vertex(i), t.points.size());
-      if(added) {
-        const Point p = position(c3t3, c, i);
-        t.points.push_back({p.x(), p.y(), p.z()});
-      }
-      cell[i] = at->second;
-    }
-    t.cells.push_back(cell);
-  }
+  t.handles = DO::tetrahedra_from_c3t3(c3t3, t.points, t.cells);
   return t;
 }
 
@@ -941,8 +929,8 @@ TEST(VolumeWorkflow, BallMapOfALinearImageIsTheSameUpToARotation)
   DO::star_shaped_to_unit_ball(long_box, Target_map(a), DO::volume_centroid(long_box));
   DO::star_shaped_to_unit_ball(cube, Target_map(b), DO::volume_centroid(cube));
   std::vector<K::Vector_3> image_a(points.size()), image_b(points.size());
-  for(const auto& [v, i] : squeezed.index) {
-    image_a[i] = a.at(v) - CGAL::ORIGIN;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    image_a[i] = a.at(squeezed.handles[i]) - CGAL::ORIGIN;
     image_b[i] = b.at(handles[i]) - CGAL::ORIGIN;
   }
   ASSERT_GT(points.size(), 500u);

@@ -8,6 +8,7 @@
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/parallel.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/enum.h>
 #include <CGAL/Kernel/global_functions.h>
 
@@ -18,6 +19,7 @@
 #include <limits>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -412,6 +414,59 @@ c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
   c3t3.clear();
   c3t3.triangulation().swap(tr);
   c3t3.rescan_after_load_of_triangulation();
+  return handles;
+}
+
+/// \ingroup PkgDistortionOptimizationRef
+/// The converse of `c3t3_from_tetrahedra()`: the cells of the complex of `c3t3` (in the order of
+/// `cells_in_complex_begin()`, each with its cell's vertex order) as `points` and `tetrahedra`,
+/// indices into `points`, which are numbered in the order the cells first reach their vertices.
+/// What the writers take (`IO::write_MEDIT_soup()`, `IO::write_VTU()`); `points` and `tetrahedra`
+/// are cleared first.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the point written for each vertex: a target map writes the image of
+///                           the tetrahedra}
+///     \cgalParamType{a readable property map from `Triangulation::Vertex_handle` to a point with
+///                    `x()`, `y()`, `z()`}
+///     \cgalParamDefault{the triangulation's points, without their weights}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns the vertex handle of each point.
+template <class C3T3, class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<typename C3T3::Triangulation::Vertex_handle>
+tetrahedra_from_c3t3(const C3T3& c3t3, std::vector<std::array<double, 3>>& points,
+                     std::vector<std::array<std::size_t, 4>>& tetrahedra,
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  const auto& tr = c3t3.triangulation();
+  const auto bare = tr.geom_traits().construct_point_3_object();
+  std::vector<Vertex_handle> handles;
+  std::unordered_map<Vertex_handle, std::size_t> index;
+  index.reserve(tr.number_of_vertices());
+  points.clear();
+  tetrahedra.clear();
+  tetrahedra.reserve(c3t3.number_of_cells_in_complex());
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<std::size_t, 4> cell;
+    for(int i = 0; i < 4; ++i) {
+      const auto [at, added] = index.emplace(c->vertex(i), points.size());
+      if(added) {
+        handles.push_back(c->vertex(i));
+        if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_point_t>::value) {
+          const auto p = bare(tr.point(c, i));
+          points.push_back({p.x(), p.y(), p.z()});
+        } else {
+          const auto& p = get(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), c->vertex(i));
+          points.push_back({double(p.x()), double(p.y()), double(p.z())});
+        }
+      }
+      cell[i] = at->second;
+    }
+    tetrahedra.push_back(cell);
+  }
   return handles;
 }
 
