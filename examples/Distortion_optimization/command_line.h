@@ -286,40 +286,30 @@ void check_files(const Command_line& c)
 // Sets the option that takes `value`; false if there is no such option.
 bool set_option(Command_line& c, const std::string& option, const std::string& value)
 {
-  if(option == "--source") c.source = value;
-  else if(option == "--target") c.target = value;
-  else if(option == "--output") c.output = value;
-  else if(option == "--measure") c.measure = value;
+  // The options whose value is kept as it is given (checked later, against each other).
+  static const std::map<std::string, std::string Command_line::*> text = {
+    {"--source", &Command_line::source}, {"--target", &Command_line::target}, {"--output", &Command_line::output},
+    {"--measure", &Command_line::measure}, {"--start", &Command_line::start},
+    {"--mesh-output", &Command_line::mesh_output}, {"--boundary", &Command_line::boundary},
+    {"--reference", &Command_line::reference}, {"--scheme", &Command_line::scheme},
+    {"--subdivided-source", &Command_line::subdivided_source}, {"--flat-output", &Command_line::flat_output},
+    {"--svg", &Command_line::svg}, {"--vertex-weights", &Command_line::vertex_weights},
+    {"--cell-weighting", &Command_line::cell_weighting}, {"--order", &Command_line::order},
+    {"--parallel-sweep", &Command_line::parallel_sweep}, {"--global-step", &Command_line::global_step},
+    {"--harmonic-start", &Command_line::harmonic_start}, {"--energy-plot", &Command_line::energy_plot},
+    {"--carry", &Command_line::carry}, {"--carry-output", &Command_line::carry_output},
+    {"--solver", &Command_line::solver}, {"--report", &Command_line::report}, {"--schedule", &Command_line::schedule}};
+  if(const auto member = text.find(option); member != text.end()) c.*(member->second) = value;
   else if(option == "--fix") { c.fix = value; c.fix_given = true; }
-  else if(option == "--start") c.start = value;
-  else if(option == "--mesh-output") c.mesh_output = value;
-  else if(option == "--boundary") c.boundary = value;
-  else if(option == "--reference") c.reference = value;
   else if(option == "--subdivide") {
     c.subdivide = parse_number<std::size_t>(option, value);
     if(c.subdivide == 0) throw Usage_error("--subdivide expects 1 to 6 levels, not 0");
   }
-  else if(option == "--scheme") c.scheme = value;
-  else if(option == "--subdivided-source") c.subdivided_source = value;
-  else if(option == "--flat-output") c.flat_output = value;
-  else if(option == "--svg") c.svg = value;
-  else if(option == "--vertex-weights") c.vertex_weights = value;
-  else if(option == "--cell-weighting") c.cell_weighting = value;
-  else if(option == "--order") c.order = value;
-  else if(option == "--parallel-sweep") c.parallel_sweep = value;
-  else if(option == "--global-step") c.global_step = value;
-  else if(option == "--harmonic-start") c.harmonic_start = value;
-  else if(option == "--energy-plot") c.energy_plot = value;
-  else if(option == "--carry") c.carry = value;
-  else if(option == "--carry-output") c.carry_output = value;
   else if(option == "--center") c.center = parse_point(option, value);
   else if(option == "--cell-size") {
     c.cell_size = parse_number<double>(option, value);
     if(!(c.cell_size > 0) || !std::isfinite(c.cell_size)) throw Usage_error("--cell-size must be a positive number");
   }
-  else if(option == "--solver") c.solver = value;
-  else if(option == "--report") c.report = value;
-  else if(option == "--schedule") c.schedule = value;
   else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
   else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
   else if(option == "--threshold") c.threshold = parse_number<double>(option, value);

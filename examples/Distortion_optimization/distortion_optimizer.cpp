@@ -695,46 +695,40 @@ int run_tetrahedra(const Command_line& c)
   const DO::Mesh_quality before = c.ideal() ? DO::mesh_quality(c3t3, target_map) : DO::Mesh_quality();
   const DO::Result r = DO::with_measure(c.measure, [&](const auto& measure) {
     measure_name = measure.name();
-    if(c.ideal()) {
-      if(!c.slides())
+    // optimize(np) under the command line's boundary: fixed, free, or sliding on the complex's own
+    // boundary (the last two guarded), with the vertices `held` constrained.
+    const auto constrained = [&](const auto& optimize, const auto& held) {
+      if(c.slides()) {
+        const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, target_map);
         return with_boundary_guard(c, [&](bool guard) {
-          return c.fix == "boundary"
-            ? DO::improve_mesh_quality(c3t3, target_map, measure, common_parameters(run, weights))
-            : DO::improve_mesh_quality(c3t3, target_map, measure,
-                DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
+          return optimize(DO::parameters::sliding_boundary(
+            surface, DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(held)));
         });
-      // Sliding on the mesh's own boundary, the vertices on its sharp edges fixed.
-      const auto sharp = DO::sharp_boundary_vertices(c3t3, target_map);
-      auto kept = boost::make_function_property_map<Tr::Vertex_handle>([&](Tr::Vertex_handle v) { return sharp.count(v) > 0 || get(fixed, v); });
-      const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, target_map);
-      return with_boundary_guard(c, [&](bool guard) {
-        return DO::improve_mesh_quality(c3t3, target_map, measure,
-          DO::parameters::sliding_boundary(surface, DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights))
-                                                      .vertex_is_constrained_map(kept)));
-      });
-    }
-    if(c.volume_mode() && c.slides()) {
-      if(c.start == "ball")
-        return CGAL::minimize_distortion(c3t3, target_map, measure,
-          DO::parameters::sliding_boundary(DO::Sphere_surface(), common_parameters(run, weights).vertex_is_constrained_map(fixed)));
-      const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, target_map);
-      return with_boundary_guard(c, [&](bool guard) {
-        return CGAL::minimize_distortion(c3t3, target_map, measure,
-          DO::parameters::sliding_boundary(surface, DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights))
-                                                      .vertex_is_constrained_map(fixed)));
-      });
-    }
-    try {
+      }
       return with_boundary_guard(c, [&](bool guard) {
         return c.fix == "boundary"
-          ? CGAL::minimize_distortion(c3t3, target_map, measure, common_parameters(run, weights))
-          : CGAL::minimize_distortion(c3t3, target_map, measure,
-              DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(fixed));
+          ? optimize(common_parameters(run, weights))
+          : optimize(DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(held));
       });
+    };
+    if(c.ideal()) {
+      const auto improve = [&](const auto& np) { return DO::improve_mesh_quality(c3t3, target_map, measure, np); };
+      if(!c.slides()) return constrained(improve, fixed);
+      // Sliding on the mesh's own boundary, the vertices on its sharp edges fixed.
+      const auto sharp = DO::sharp_boundary_vertices(c3t3, target_map);
+      return constrained(improve, boost::make_function_property_map<Tr::Vertex_handle>(
+                                    [&](Tr::Vertex_handle v) { return sharp.count(v) > 0 || get(fixed, v); }));
+    }
+    const auto minimize = [&](const auto& np) { return CGAL::minimize_distortion(c3t3, target_map, measure, np); };
+    if(c.slides() && c.start == "ball")
+      return minimize(
+        DO::parameters::sliding_boundary(DO::Sphere_surface(), common_parameters(run, weights).vertex_is_constrained_map(fixed)));
+    try {
+      return constrained(minimize, fixed);
     } catch(const DO::Unmovable_inverted_cell& e) {
       // The tool's own start inverts cells that its fixed boundary keeps inverted (a radial map
       // of a non-convex volume): the remedy is the sliding boundary.
-      if(!c.volume_mode()) throw;
+      if(!c.volume_mode() || c.slides()) throw;
       throw DO::Invalid_input(std::string(e.what()) + " (--boundary slide lets the boundary vertices move)");
     }
   });
