@@ -843,6 +843,22 @@ TEST(VolumeWorkflow, UntangledBallMapIsTheSameAtAnyScale)
   }
 }
 
+// A tight barrier can wall a tangle in: the ball map of CGAL's cross.off (a plus sign 1 x 1 x 0.2)
+// kept one interior cell inverted, its four vertices free, for 57 rounds while eps fell to its
+// floor, and untangle() threw. Loosened again, the barrier lets the cell's ring give way.
+TEST(VolumeWorkflow, UntanglingLoosensABarrierThatWallsATangleIn)
+{
+  DEMO_SURFACE(cross, "cross.off");
+  const C3t3 c3t3 = DO::mesh_interior(cross);
+  Targets ball;
+  ASSERT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)), 0u);
+  DO::Untangle_result r;
+  ASSERT_NO_THROW(r = DO::untangle(c3t3, Target_map(ball), DOP::sliding_boundary(DO::Sphere_surface())));
+  EXPECT_EQ(r.inverted_after, 0u);
+  EXPECT_EQ(inverted(c3t3, ball), 0u);
+  EXPECT_GT(on_the_unit_sphere(c3t3, ball), 1000u);
+}
+
 TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)
 {
   // A tetrahedron spanning -2^1023 .. 2^1023, whose extent is not a double: its centroid and ball

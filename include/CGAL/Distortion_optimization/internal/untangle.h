@@ -291,6 +291,8 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
   std::vector<Vector<n>> best_targets = start_targets;
   std::size_t fewest = report.inverted_before, rounds_without_progress = 0;
   std::size_t lowest = std::numeric_limits<std::size_t>::max(), rounds_since_low = 0;
+  const double start_epsilon = barrier.epsilon;
+  std::size_t rounds_since_fewest = 0, restarts = 0;
   // Checked after every step: the exact count only once no cell is numerically flat any more.
   const auto untangled = [&] { return count([&](std::size_t c) { return is_numerically_flat(problem.map, c); }) == 0 && tangled() == 0; };
   // A part (throw_on_failure false) gains more from lowering eps often than from converging each
@@ -321,6 +323,9 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
     if(report.inverted_after < fewest) {
       fewest = report.inverted_after;
       best_targets = problem.map.target;
+      rounds_since_fewest = 0;
+    } else {
+      ++rounds_since_fewest;
     }
     // Garanzha et al.'s rule, on determinants relative to the typical one.
     const double worst = smallest_jacobian_determinant(problem.map, workers) / barrier.reference_det;
@@ -328,6 +333,18 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
     const double chi = Untangling_barrier::regularized_determinant(worst, e * e, root);
     const double sigma = std::max(before > 0 ? 1 - after / before : 0., 0.5), mu = (1 - sigma) * chi;
     barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
+    // A tight barrier can lock a tangle in: its cells' rings are valid and the barrier walls them
+    // in. The ball map of CGAL's cross.off left one interior cell, its four vertices free,
+    // inverted for 57 rounds while eps fell to its floor (the 20 x 1 x 1 box, the 2 x 2 x 0.06
+    // plate: the same). Loosened back to its start value, from the map as it is, the barrier lets
+    // the ring give way (cross and box: untangled in the next round; plate: 29 rounds later): up
+    // to 3 times, once the count has made no new low for 5 rounds and eps is below a thousandth of
+    // its start.
+    if(rounds_since_fewest >= 5 && barrier.epsilon < 1e-3 * start_epsilon && restarts < 3) {
+      barrier.epsilon = start_epsilon;
+      rounds_since_fewest = 0;
+      ++restarts;
+    }
     // Stuck: eps at its floor and no cell untangled for a while.
     rounds_without_progress = barrier.epsilon <= floor && report.inverted_after >= inverted_before ? rounds_without_progress + 1 : 0;
     if(rounds_without_progress >= 20) break;
