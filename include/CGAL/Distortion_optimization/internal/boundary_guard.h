@@ -211,11 +211,13 @@ public:
   // degenerate or meets another improperly (not only the first found), or else of the boundaries of
   // two pieces one inside the other, so that a caller may hold them back. With a positive
   // `clearance_fraction` (a move's check: 1), faces closer than that fraction of their clearance()
-  // count as meeting.
+  // count as meeting. `nested`, if given, tells whether it fails by two pieces one inside the other
+  // only (then `crossing` holds the whole boundaries of both).
   bool is_injective(const std::vector<Vector<n>>& target, std::vector<std::uint32_t>* crossing = nullptr,
-                    double clearance_fraction = 0) const
+                    double clearance_fraction = 0, bool* nested = nullptr) const
   {
     if(crossing) crossing->clear();
+    if(nested) *nested = false;
     const auto report = [&](std::uint32_t f) {
       if(crossing) crossing->insert(crossing->end(), faces_[f].begin(), faces_[f].end());
     };
@@ -244,10 +246,11 @@ public:
       }
     });
     if(!injective || !several_pieces()) return injective;
-    const std::pair<std::uint32_t, std::uint32_t> nested = nested_pieces(target);
-    if(nested.first == nested.second) return true;
+    const std::pair<std::uint32_t, std::uint32_t> pair = nested_pieces(target);
+    if(pair.first == pair.second) return true;
+    if(nested) *nested = true;
     for(std::uint32_t f = 0; f < faces_.size(); ++f)
-      if(face_piece_[f] == nested.first || face_piece_[f] == nested.second) report(f);
+      if(face_piece_[f] == pair.first || face_piece_[f] == pair.second) report(f);
     return false;
   }
 

@@ -213,7 +213,7 @@ public:
     // step took a tenth of the run.
     const double t_max = max_step(direction, 1 / 0.9);
     double t = t_max > 1 ? 1. : 0.9 * t_max;
-    return line_search(direction, t, 0., 0., 4);
+    return line_search(direction, t, 0., [] { return 0.; }, 0., 4);
   }
 
   // One preconditioned global step. Returns true if the map changed. A Newton step that cannot be
@@ -329,7 +329,7 @@ private:
     // model's step shorter than that is not worth the trials: the Laplacian's follows). A
     // proxy's step has the measure's slope.
     const bool model = newton && !is_own_model && !proxy_;
-    const bool moved = line_search(direction, t, model ? 0. : slope, natural ? 1. : 0., model ? 8 : 30);
+    const bool moved = line_search(direction, t, model ? 0. : slope, slope_of, natural ? 1. : 0., model ? 8 : 30);
     if(moved) last = t;
     if(newton) blocked_ = !(moved && t >= 1);
     return moved;
@@ -558,7 +558,15 @@ private:
   // Backtracks from t along D until the energy decreases (Armijo with the given slope, or any
   // decrease above rounding if slope is 0) with no valid cell flipped; then commits. After a
   // first failure above `natural` (> 0), the next trial is `natural` rather than t / 2.
-  bool line_search(const std::vector<Vec>& direction, double& t, double slope, double natural = 0, int trials = 30)
+  // A trial whose boundary the guard finds crossing itself (not only a piece inside another) holds
+  // the vertices of the crossing faces where they are (their direction zeroed; slope_of() then gives the slope left) and tries
+  // the same length again, up to max_holds times: near a fold of the boundary that moves closed to
+  // within rounding, every step of those few vertices crosses, and halving the whole step for them
+  // stalled the rest of the map (CGAL's dino.off, --start radial --boundary slide: steps of 1e-11
+  // from the fifth iteration on).
+  template <class SlopeOf>
+  bool line_search(std::vector<Vec>& direction, double& t, double slope, const SlopeOf& slope_of, double natural = 0,
+                   int trials = 30)
   {
     std::vector<Vec>& x = state_.targets();
     const std::vector<Vec> x0 = x;
@@ -566,7 +574,11 @@ private:
     const std::vector<std::uint32_t>& moving = system_.moving_cells();
     const auto moving_cell = [&](std::size_t i) { return moving[i]; };
     auto* guard = state_.boundary_guard();
-    const auto boundary_ok = [&] { return !guard || guard->is_injective(x, nullptr, guard->keeps_clearance() ? 1. : 0.); };
+    std::vector<std::uint32_t> crossing;
+    bool nested = false;
+    const auto boundary_ok = [&] {
+      return !guard || guard->is_injective(x, &crossing, guard->keeps_clearance() ? 1. : 0., &nested);
+    };
     const auto place = [&](double length) {
       state_.workers().for_each(x.size(), 4096, [&](std::size_t v) {
         if(!p_.is_free[v]) return;
@@ -575,8 +587,9 @@ private:
         if(p_.slides(v) && direction[v] != Vec::Zero()) x[v] = p_.slide(x[v], normal);
       });
     };
-    for(int k = 0; k < trials && t > 0; ++k, t = k == 1 && natural > 0 && t > natural ? natural : 0.5 * t) {
+    for(int k = 0, holds = 0; k < trials && t > 0;) {
       place(t);
+      crossing.clear();
       if(state_.accept_trial(moving.size(), moving_cell, e0, State::armijo * t * slope, true, boundary_ok)) {
         // On tetrahedra a trial beyond the natural length can pass with little gain: twice a
         // Newton step of K's model lands across K's kink about as far as it started, and of a
@@ -593,10 +606,19 @@ private:
         if(guard) guard->rebuild(x);
         return true;
       }
+      if(!crossing.empty() && !nested && holds < max_holds) {
+        ++holds;
+        for(std::uint32_t v : crossing) direction[v] = Vec::Zero();
+        if(slope != 0 && !((slope = slope_of()) < 0)) break;
+        continue;
+      }
+      ++k;
+      t = k == 1 && natural > 0 && t > natural ? natural : 0.5 * t;
     }
     x = x0;
     return false;
   }
+  static constexpr int max_holds = 8;
 
   State& state_;
   const Optimization_problem<n>& p_;
