@@ -559,11 +559,11 @@ private:
   // decrease above rounding if slope is 0) with no valid cell flipped; then commits. After a
   // first failure above `natural` (> 0), the next trial is `natural` rather than t / 2.
   // A trial whose boundary the guard finds crossing itself (not only a piece inside another) holds
-  // the vertices of the crossing faces where they are (their direction zeroed; slope_of() then gives the slope left) and tries
-  // the same length again, up to max_holds times: near a fold of the boundary that moves closed to
-  // within rounding, every step of those few vertices crosses, and halving the whole step for them
-  // stalled the rest of the map (CGAL's dino.off, --start radial --boundary slide: steps of 1e-11
-  // from the fifth iteration on).
+  // the vertices of the crossing faces where they are (their direction zeroed; slope_of() then
+  // gives the slope left) and tries the same length again, up to max_holds times: near a fold of
+  // the boundary that moves closed to within rounding, every step of those few vertices crosses,
+  // and halving the whole step for them stalled the rest of the map (CGAL's dino.off, --start
+  // radial --boundary slide: steps of 1e-11 from the fifth iteration on).
   template <class SlopeOf>
   bool line_search(std::vector<Vec>& direction, double& t, double slope, const SlopeOf& slope_of, double natural = 0,
                    int trials = 30)
