@@ -878,15 +878,12 @@ TEST(VolumeWorkflow, AFoldOfTheSlidingBoundaryHoldsBackOnlyItsOwnVertices)
   EXPECT_TRUE(r.converged);
   EXPECT_LT(r.final_energy, 1.276);
   double farthest = 0;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i)))
-        for(int j = 1; j < 4; ++j) {
-          const Point& p = map.at(c->vertex((i + j) % 4));
-          std::array<double, 3> normal;
-          const std::array<double, 3> q = surface.project({p.x(), p.y(), p.z()}, normal);
-          farthest = std::max(farthest, std::sqrt(CGAL::squared_distance(p, Point(q[0], q[1], q[2]))));
-        }
+  for(Vertex_handle v : test_complexes::boundary_vertices(c3t3)) {
+    const Point& p = map.at(v);
+    std::array<double, 3> normal;
+    const std::array<double, 3> q = surface.project({p.x(), p.y(), p.z()}, normal);
+    farthest = std::max(farthest, std::sqrt(CGAL::squared_distance(p, Point(q[0], q[1], q[2]))));
+  }
   EXPECT_LT(farthest, 1e-12);
 }
 
