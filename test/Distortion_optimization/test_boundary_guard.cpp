@@ -729,6 +729,35 @@ TEST(BoundaryGuard, PressedArmsKeepTheirClearanceThroughRounding)
   EXPECT_TRUE(guard.is_injective(rounded));
 }
 
+// The distance of two faces is the same in either order, to the last bit: a move's check and the
+// whole boundary's meet a pair in different orders, and a pair a move kept beyond the clearance
+// must not be within it for the other (CGAL 5.5's segment distances depend on the order: on these
+// pairs, edges nearly crossing at 1e-13, a one-way edge-edge distance differed on most of them).
+TEST(BoundaryGuard, FaceDistancesDoNotDependOnTheOrder)
+{
+  using K = Guard3::K;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto point = [&] { return K::Point_3(u(random), u(random), u(random)); };
+  // A point of the segment (a, b) moved by about 1e-13.
+  const auto near = [&](const K::Point_3& a, const K::Point_3& b) {
+    const double s = 0.5 + 0.4 * u(random);
+    return K::Point_3(a.x() + s * (b.x() - a.x()) + 1e-13 * u(random), a.y() + s * (b.y() - a.y()) + 1e-13 * u(random),
+                      a.z() + s * (b.z() - a.z()) + 1e-13 * u(random));
+  };
+  int differ = 0;
+  for(int i = 0; i < 20000; ++i) {
+    // g's edge from c through a point nearly on e's edge (a, b), and beyond it by 1e-13 at most.
+    const K::Point_3 a = point(), b = point(), c = point(), m = near(a, b);
+    const K::Triangle_3 e(a, b, point()), g(c, m, K::Point_3(c.x() + 0.1 * u(random), c.y() + 0.1, c.z()));
+    differ += Guard3::squared_distance(e, g) != Guard3::squared_distance(g, e);
+    const K::Point_2 a2(a.x(), a.y()), b2(b.x(), b.y()), m2(m.x(), m.y());
+    differ += Guard2::squared_distance(K::Segment_2(a2, b2), K::Segment_2(K::Point_2(c.x(), c.y()), m2)) !=
+              Guard2::squared_distance(K::Segment_2(K::Point_2(c.x(), c.y()), m2), K::Segment_2(a2, b2));
+  }
+  EXPECT_EQ(differ, 0);
+}
+
 // A piece inside another without any crossing: refused by the ray tests, also where the ray from
 // the piece's vertices runs through the other's vertices and along its edges.
 TEST(BoundaryGuard, PieceInsideAnotherPlanar)

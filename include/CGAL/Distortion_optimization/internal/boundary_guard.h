@@ -116,8 +116,10 @@ public:
   bool empty() const { return faces_.empty(); }
   bool is_on_boundary(std::size_t v) const { return first_face_[v + 1] > first_face_[v]; }
 
-  // Needed before the first query; any time after (e.g. after a global step).
-  void rebuild(const std::vector<Vector<n>>& target)
+  // Needed before the first query; any time after (e.g. after a global step). `clear`: the caller
+  // has just found `target` injective with its faces a clearance apart (is_injective(target,
+  // nullptr, 1.)), which spares that test here.
+  void rebuild(const std::vector<Vector<n>>& target, bool clear = false)
   {
     const std::size_t B = faces_.size();
     std::vector<Box> boxes(B);
@@ -136,15 +138,21 @@ public:
     refits_ = 0;
     if(B > 0) build(order.data(), order.data() + B, -1, boxes, centres);
     if(several_pieces()) committed_ = target;
-    // A map whose boundary is already closer to itself than that (given so) keeps the exact tests.
-    // A quarter of the clearance here: distances so small are computed to a few percent, and a
-    // pair that a move kept just beyond the clearance must not turn it off.
-    keeps_clearance_ = is_injective(target, nullptr, 0.25);
+    // A map whose boundary is already closer to itself than that (given so) keeps the exact tests:
+    // below a quarter of the clearance, as distances so small are computed to a few percent. A map
+    // with faces between a quarter and the whole of it (moves in exact tests brought them there)
+    // keeps it for moves, and the whole boundary's checks take the quarter (clearance_fraction()):
+    // at the whole, every trial of a global step fails on that pair (with holds: 38 trials a step).
+    if(clear || is_injective(target, nullptr, 1.)) clearance_fraction_ = 1;
+    else clearance_fraction_ = is_injective(target, nullptr, 0.25) ? 0.25 : 0.;
   }
 
   // Whether moves keep faces apart by their clearance (see the header), as the map had them at the
   // last rebuild().
-  bool keeps_clearance() const { return keeps_clearance_; }
+  bool keeps_clearance() const { return clearance_fraction_ > 0; }
+  // The fraction of the clearance that the map kept at the last rebuild() (1, 0.25 or 0), which
+  // moves keep: what a check of the whole boundary after moves of many vertices asks for.
+  double clearance_fraction() const { return clearance_fraction_; }
 
   // Whether the trial position target[v] keeps the boundary injective. Only v may have moved since
   // the last rebuild() or commit_move(): the state then is assumed injective.
@@ -159,7 +167,7 @@ public:
     for(const std::uint32_t* f = ring; f != ring_end; ++f) {
       if(is_degenerate(*f, target)) return false;
       for(const std::uint32_t* g = ring; g != f; ++g)
-        if(improper(*f, *g, target, keeps_clearance_ ? 1. : 0.)) return false;
+        if(improper(*f, *g, target, keeps_clearance() ? 1. : 0.)) return false;
     }
     // Then one traversal for the whole ring (the star's box), each candidate against each ring
     // face; boxes grown by twice the ring's clearance, which bounds any candidate's near it.
@@ -169,7 +177,7 @@ public:
       ring_boxes_.push_back(face_box(*f, target));
       star.extend(ring_boxes_.back());
     }
-    const double near = keeps_clearance_ ? 2 * clearance(star) : 0.;
+    const double near = keeps_clearance() ? 2 * clearance(star) : 0.;
     for(Box& b : ring_boxes_) b = grown(b, near);
     star = grown(star, near);
     const bool apart = visit(star, [&](std::uint32_t g) {   // false stops the traversal
@@ -178,7 +186,7 @@ public:
       if(!box.intersects(star)) return true;
       if(degenerate_[g]) return false;
       for(std::size_t i = 0; i < ring_boxes_.size(); ++i)
-        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target, keeps_clearance_ ? 1. : 0.)) return false;
+        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target, keeps_clearance() ? 1. : 0.)) return false;
       return true;
     });
     return apart && (!several_pieces() || sweeps_no_other_piece(v, target));
@@ -257,10 +265,37 @@ public:
   // Whether the guard knows of two or more pieces with boundary.
   bool several_pieces() const { return !components_.empty(); }
 
+  // The squared distance of two faces that do not meet, the same for (e, g) and (g, e): a move's
+  // check and the whole boundary's see a pair in either order. Triangles: the least over each
+  // vertex to the other triangle and each edge to each edge of the other, each of those both ways:
+  // CGAL 5.5's distances in doubles depend on the order of their arguments (two segments 1e-13
+  // apart: 43% of random pairs differ, some by the whole distance). Faces of a free boundary
+  // pressed together were 4.6e-13 apart one way and 0 the other (64 ulps were 1.5e-13 there); on
+  // CGAL's femur.off (--start radial --boundary slide) local moves brought a pair within the
+  // clearance one way that the global step's check then saw the other way, at its start: every
+  // later trial failed (38 trials, 8 s a step, from iteration 51 on).
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  static double squared_distance(const K::Segment_2& e, const K::Segment_2& g)
+  {
+    return std::min(CGAL::squared_distance(e, g), CGAL::squared_distance(g, e));
+  }
+  static double squared_distance(const K::Triangle_3& e, const K::Triangle_3& g)
+  {
+    double d = infinity;
+    for(int i = 0; i < 3; ++i) {
+      d = std::min({d, CGAL::squared_distance(e.vertex(i), g), CGAL::squared_distance(g.vertex(i), e)});
+      const K::Segment_3 edge(e.vertex(i), e.vertex((i + 1) % 3));
+      for(int j = 0; j < 3; ++j) {
+        const K::Segment_3 other(g.vertex(j), g.vertex((j + 1) % 3));
+        d = std::min({d, CGAL::squared_distance(edge, other), CGAL::squared_distance(other, edge)});
+      }
+    }
+    return d;
+  }
+
 private:
   using Box = Eigen::AlignedBox<double, n>;
   using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;   // box_intersection_d's
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   struct Node
   {
     Box box;
@@ -276,7 +311,7 @@ private:
   std::vector<std::int32_t> leaf_;           // node of each face
   std::vector<unsigned char> degenerate_;    // per face, as of its last rebuild() or commit_move()
   std::size_t refits_ = 0;
-  bool keeps_clearance_ = false;
+  double clearance_fraction_ = 0;
   std::vector<std::int32_t> stack_;          // scratch of accepts_move()
   std::vector<Box> ring_boxes_;
   // With several pieces (all empty otherwise): per face its piece (0, 1, ...), per boundary
@@ -623,26 +658,6 @@ private:
     if(!(fraction > 0)) return false;
     const double d = fraction * clearance(face_box(fi, t).merged(face_box(gi, t)));
     return !(squared_distance(e, g) > d * d);
-  }
-
-  // The squared distance of two faces that do not meet, the same for (e, g) and (g, e). Triangles:
-  // the least over each vertex to the other triangle and each edge to each edge of the other.
-  // CGAL 5.5's Triangle_3-Triangle_3 distance, computed in doubles, depends on the order: two faces
-  // of a free boundary pressed together were 4.6e-13 apart one way and 0 the other (64 ulps were
-  // 1.5e-13 there), and the moves' checks, one way, let them close in to 0.003 ulp.
-  static double squared_distance(const K::Segment_2& e, const K::Segment_2& g)
-  {
-    return std::min(CGAL::squared_distance(e, g), CGAL::squared_distance(g, e));
-  }
-  static double squared_distance(const K::Triangle_3& e, const K::Triangle_3& g)
-  {
-    double d = infinity;
-    for(int i = 0; i < 3; ++i) {
-      d = std::min({d, CGAL::squared_distance(e.vertex(i), g), CGAL::squared_distance(g.vertex(i), e)});
-      const K::Segment_3 edge(e.vertex(i), e.vertex((i + 1) % 3));
-      for(int j = 0; j < 3; ++j) d = std::min(d, CGAL::squared_distance(edge, K::Segment_3(g.vertex(j), g.vertex((j + 1) % 3))));
-    }
-    return d;
   }
 };
 

@@ -577,7 +577,7 @@ private:
     std::vector<std::uint32_t> crossing;
     bool nested = false;
     const auto boundary_ok = [&] {
-      return !guard || guard->is_injective(x, &crossing, guard->keeps_clearance() ? 1. : 0., &nested);
+      return !guard || guard->is_injective(x, &crossing, guard->clearance_fraction(), &nested);
     };
     const auto place = [&](double length) {
       state_.workers().for_each(x.size(), 4096, [&](std::size_t v) {
@@ -603,7 +603,8 @@ private:
           if(state_.accept_trial(moving.size(), moving_cell, state_.energy(), 0., true, boundary_ok)) t = natural;
           else place(t);   // the same bits as the committed trial
         }
-        if(guard) guard->rebuild(x);
+        // The committed trial passed boundary_ok(): with the whole clearance, if the guard asked it.
+        if(guard) guard->rebuild(x, guard->clearance_fraction() == 1);
         return true;
       }
       if(!crossing.empty() && !nested && holds < max_holds) {
