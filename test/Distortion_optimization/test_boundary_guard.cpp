@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -756,6 +757,64 @@ TEST(BoundaryGuard, FaceDistancesDoNotDependOnTheOrder)
               Guard2::squared_distance(K::Segment_2(K::Point_2(c.x(), c.y()), m2), K::Segment_2(a2, b2));
   }
   EXPECT_EQ(differ, 0);
+}
+
+// The separating axes' shortcut (apart()) says that two triangles are more than d apart only where
+// they are (exact distances, exact intersection test), and says it for the pairs it is there for:
+// nearly coplanar faces side by side, a little apart, as a smooth boundary has them near a ring.
+TEST(BoundaryGuard, SeparatingAxesAreCertain)
+{
+  using V = Vector<3>;
+  using Triangle = std::array<V, 3>;
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto point = [&] { return V(u(random), u(random), u(random)); };
+  const auto exact = [](const Triangle& t) {
+    return EK::Triangle_3(EK::Point_3(t[0][0], t[0][1], t[0][2]), EK::Point_3(t[1][0], t[1][1], t[1][2]),
+                          EK::Point_3(t[2][0], t[2][1], t[2][2]));
+  };
+  // Whether the exact distance of a and b exceeds d (vertices to triangles, edges to edges).
+  const auto farther_than = [&](const Triangle& a, const Triangle& b, double d) {
+    const EK::Triangle_3 e = exact(a), g = exact(b);
+    if(CGAL::do_intersect(e, g)) return false;
+    const EK::FT d2 = EK::FT(d) * EK::FT(d);
+    for(int i = 0; i < 3; ++i) {
+      if(CGAL::squared_distance(e.vertex(i), g) <= d2 || CGAL::squared_distance(g.vertex(i), e) <= d2) return false;
+      for(int j = 0; j < 3; ++j)
+        if(CGAL::squared_distance(EK::Segment_3(e.vertex(i), e.vertex((i + 1) % 3)),
+                                  EK::Segment_3(g.vertex(j), g.vertex((j + 1) % 3))) <= d2)
+          return false;
+    }
+    return true;
+  };
+  const double clearance = 64 * std::numeric_limits<double>::epsilon() * std::sqrt(3.);   // the guard's, near unit size
+  int wrong = 0, said_apart = 0, side_by_side = 0, found = 0;
+  for(int i = 0; i < 1500; ++i) {
+    const Triangle a = {point(), point(), point()};
+    const V n = (a[1] - a[0]).cross(a[2] - a[0]).normalized();
+    // Nearly touching: b from a point of a moved off it by 1e-16 to 1e-12, either way.
+    const double w0 = std::abs(u(random)), w1 = std::abs(u(random)) * (1 - w0);
+    const V on = a[0] + w0 * (a[1] - a[0]) + w1 * (a[2] - a[0]);
+    const V off = on + std::pow(10., -14 + 2 * u(random)) * point().normalized();
+    const Triangle touching = {off, off + 0.5 * point(), off + 0.5 * point()};
+    // Side by side: across a's edge (a0, a1) in a's plane, 1e-3 beyond it, tilted by up to 1e-2.
+    const V across = n.cross(a[1] - a[0]).normalized();
+    const double side = across.dot(a[2] - a[0]) > 0 ? -1 : 1;
+    const V shift = side * 1e-3 * across;
+    const Triangle neighbour = {a[0] + shift, a[1] + shift, (a[0] + a[1]) / 2 + shift + side * across + 1e-2 * u(random) * n};
+    for(const double d : {0., clearance, 0.25 * clearance}) {
+      for(const Triangle& b : {touching, neighbour}) {
+        if(!Guard3::apart(a, b, d)) continue;
+        ++said_apart;
+        wrong += !farther_than(a, b, d);
+      }
+      ++side_by_side;
+      found += Guard3::apart(a, neighbour, d);
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(said_apart, side_by_side);   // some nearly touching pairs too
+  EXPECT_EQ(found, side_by_side);
 }
 
 // A piece inside another without any crossing: refused by the ray tests, also where the ray from

@@ -293,6 +293,34 @@ public:
     return d;
   }
 
+  // Whether two triangles are certainly more than d >= 0 apart (so that they neither meet nor
+  // come within d), by a separating axis in doubles: a triangle's normal, or the normal of one of
+  // its edges within its plane, which parts the disjoint and nearly coplanar faces that a smooth
+  // boundary puts side by side. The rounding of the projections, a few units in the last place of
+  // the largest coordinate, is added to d: a yes is certain; a no leaves the pair to the exact
+  // tests (Gottschalk, Lin and Manocha's separating axes, 1996, with a margin).
+  static bool apart(const std::array<Vector<3>, 3>& a, const std::array<Vector<3>, 3>& b, double d)
+  {
+    double largest = 0;
+    for(int i = 0; i < 3; ++i) largest = std::max({largest, a[i].cwiseAbs().maxCoeff(), b[i].cwiseAbs().maxCoeff()});
+    const double slack = d + 64 * std::numeric_limits<double>::epsilon() * largest;
+    const auto separates = [&](const Vector<3>& axis) {
+      double a_low = infinity, a_high = -infinity, b_low = infinity, b_high = -infinity;
+      for(int i = 0; i < 3; ++i) {
+        const double x = axis.dot(a[i] - a[0]), y = axis.dot(b[i] - a[0]);
+        a_low = std::min(a_low, x), a_high = std::max(a_high, x);
+        b_low = std::min(b_low, y), b_high = std::max(b_high, y);
+      }
+      const double margin = slack * axis.norm();
+      return b_low - a_high > margin || a_low - b_high > margin;
+    };
+    const Vector<3> na = (a[1] - a[0]).cross(a[2] - a[0]), nb = (b[1] - b[0]).cross(b[2] - b[0]);
+    if(separates(na) || separates(nb)) return true;
+    for(int i = 0; i < 3; ++i)
+      if(separates(na.cross(a[(i + 1) % 3] - a[i])) || separates(nb.cross(b[(i + 1) % 3] - b[i]))) return true;
+    return false;
+  }
+
 private:
   using Box = Eigen::AlignedBox<double, n>;
   using Box_d = CGAL::Box_intersection_d::Box_with_info_d<double, n, std::uint32_t>;   // box_intersection_d's
@@ -619,7 +647,7 @@ private:
       const K::Point_2 s = point(a[0], t), q = point(a[1], t), r = point(b[1], t);
       if(shared == 0) {
         const K::Segment_2 e(s, q), g(r, point(b[0], t));
-        return CGAL::do_intersect(e, g) || too_close(e, g, fi, gi, t, clearance_fraction);
+        return CGAL::do_intersect(e, g) || too_close(e, g, clearance_fraction * clearance(fi, gi, t));
       }
       // (s, q) and (s, r) meet beyond s iff q and r lie on the same ray from s.
       return CGAL::orientation(s, q, r) == CGAL::COLLINEAR &&
@@ -629,8 +657,10 @@ private:
       const K::Point_3 a0 = point(a[0], t), a1 = point(a[1], t), a2 = point(a[2], t);
       const K::Point_3 b0 = point(b[0], t), b1 = point(b[1], t), b2 = point(b[2], t);
       if(shared == 0) {
+        const double d = clearance_fraction * clearance(fi, gi, t);
+        if(apart({t[a[0]], t[a[1]], t[a[2]]}, {t[b[0]], t[b[1]], t[b[2]]}, d)) return false;
         const K::Triangle_3 e(a0, a1, a2), g(b0, b1, b2);
-        return CGAL::do_intersect(e, g) || too_close(e, g, fi, gi, t, clearance_fraction);
+        return CGAL::do_intersect(e, g) || too_close(e, g, d);
       }
       // Sharing edge a0a1: unless coplanar the planes meet in that edge's line only; coplanar, the
       // triangles overlap iff a2 and b2 are not strictly on opposite sides of it.
@@ -649,15 +679,17 @@ private:
     }
   }
 
-  // Whether faces fi and gi (e and g as segments or triangles) are at most `fraction` of their
-  // clearance() apart (never with a zero fraction).
-  template <class Face_object>
-  bool too_close(const Face_object& e, const Face_object& g, std::uint32_t fi, std::uint32_t gi,
-                 const std::vector<Vector<n>>& t, double fraction) const
+  // The clearance of two faces, from the box of both.
+  double clearance(std::uint32_t fi, std::uint32_t gi, const std::vector<Vector<n>>& t) const
   {
-    if(!(fraction > 0)) return false;
-    const double d = fraction * clearance(face_box(fi, t).merged(face_box(gi, t)));
-    return !(squared_distance(e, g) > d * d);
+    return clearance(face_box(fi, t).merged(face_box(gi, t)));
+  }
+
+  // Whether faces e and g (segments or triangles) are at most d > 0 apart (never with d = 0).
+  template <class Face_object>
+  static bool too_close(const Face_object& e, const Face_object& g, double d)
+  {
+    return d > 0 && !(squared_distance(e, g) > d * d);
   }
 };
 
