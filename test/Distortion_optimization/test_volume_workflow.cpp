@@ -41,6 +41,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -885,6 +886,46 @@ TEST(VolumeWorkflow, AFoldOfTheSlidingBoundaryHoldsBackOnlyItsOwnVertices)
     farthest = std::max(farthest, std::sqrt(CGAL::squared_distance(p, Point(q[0], q[1], q[2]))));
   }
   EXPECT_LT(farthest, 1e-12);
+}
+
+// A hint (the triangle of an earlier answer) changes where the search starts, not what it finds:
+// the closest point's distance, and a triangle that holds it, whatever the hint (none, a near one,
+// a far one, one out of range).
+TEST(VolumeWorkflow, HintsLeaveTheClosestPointsOfATriangleSurface)
+{
+  DEMO_SURFACE(helmet, "helmet.off");
+  const DO::Triangle_surface surface = DO::Triangle_surface::from_mesh(helmet);
+  std::vector<K::Triangle_3> triangles;
+  for(auto f : faces(helmet)) {
+    std::vector<Point> t;
+    for(auto v : vertices_around_face(halfedge(f, helmet), helmet)) t.push_back(helmet.point(v));
+    triangles.emplace_back(t[0], t[1], t[2]);
+  }
+  ASSERT_EQ(triangles.size(), surface.size());
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(helmet);
+  const double size = std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-0.05 * size, 0.05 * size);
+  std::uniform_int_distribution<std::size_t> any(0, helmet.number_of_vertices() - 1);
+  std::uniform_int_distribution<std::ptrdiff_t> any_triangle(0, std::ptrdiff_t(triangles.size()) - 1);
+  std::ptrdiff_t last = -1;   // the hint a sequence of nearby queries keeps
+  for(int i = 0; i < 2000; ++i) {
+    const Point p = helmet.point(Surface::Vertex_index(static_cast<std::uint32_t>(any(random))));
+    const std::array<double, 3> x = {p.x() + u(random), p.y() + u(random), p.z() + u(random)};
+    const Point xp(x[0], x[1], x[2]);
+    std::array<double, 3> normal;
+    const std::array<double, 3> plain = surface.project(x, normal);
+    const double closest = std::sqrt(CGAL::squared_distance(xp, Point(plain[0], plain[1], plain[2])));
+    for(std::ptrdiff_t hint : {std::ptrdiff_t(-1), last, any_triangle(random), std::ptrdiff_t(triangles.size() + 5)}) {
+      const std::array<double, 3> q = surface.project(x, normal, hint);
+      ASSERT_GE(hint, 0);
+      ASSERT_LT(hint, std::ptrdiff_t(triangles.size()));
+      const Point qp(q[0], q[1], q[2]);
+      EXPECT_NEAR(std::sqrt(CGAL::squared_distance(xp, qp)), closest, 1e-12 * size) << i;
+      EXPECT_LT(std::sqrt(CGAL::squared_distance(qp, triangles[hint])), 1e-12 * size) << i;
+      last = hint;
+    }
+  }
 }
 
 TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)

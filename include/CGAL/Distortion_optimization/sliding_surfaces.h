@@ -16,6 +16,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -39,7 +40,10 @@ the default unit sphere centred at the origin is the boundary of the image of
 
 It is a model of the concept `SlidingSurface`: `project(x, normal)` returns the point of the
 surface closest to `x` (an `std::array<double, d>`, d = 2 or 3) and sets `normal` to the unit
-outward normal there. A model must be callable concurrently from several threads.
+outward normal there. A model must be callable concurrently from several threads. A model may also
+offer `project(x, normal, hint)`, `hint` a `std::ptrdiff_t&` that it reads and sets (as
+`Triangle_surface` does): the optimizer then keeps one hint per vertex, as the last query for
+that vertex left it (-1 before the first), and queries for different vertices may run concurrently.
 */
 class Sphere_surface
 {
@@ -88,11 +92,15 @@ private:
 A closed triangle surface as a sliding surface, a model of `SlidingSurface` in 3D: closest points
 from an AABB tree of its triangles (built once, with its distance-query acceleration, so that
 queries can run on several threads), and as normal the unit normal of the closest triangle. The
-surface is copied: the mesh it was made from may change or go away.
+surface is copied: the mesh it was made from may change or go away. It takes hints (the triangle
+of the last answer), which spare most of a query for a point near the last one.
 */
 class Triangle_surface
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  // The tree in plain doubles: its closest points are constructions in doubles anyway, and with
+  // Epick the filtered comparisons of distances to the nodes' boxes took most of each query
+  // (degeneracy is still decided exactly).
+  using K = CGAL::Simple_cartesian<double>;
   using Triangles = std::vector<K::Triangle_3>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
 
@@ -118,7 +126,8 @@ public:
     for(const auto& t : triangles) {
       const auto point = [&](const std::array<double, 3>& p) { return K::Point_3(p[0] * scale_, p[1] * scale_, p[2] * scale_); };
       triangles_->emplace_back(point(t[0]), point(t[1]), point(t[2]));
-      if(triangles_->back().is_degenerate())
+      const auto exact = [&](int i) { return CGAL::Epick::Point_3(t[i][0], t[i][1], t[i][2]); };
+      if(CGAL::collinear(exact(0), exact(1), exact(2)))
         throw Invalid_input("triangle " + std::to_string(triangles_->size() - 1) + " of the sliding surface is degenerate");
     }
     tree_ = std::make_shared<Tree>(triangles_->begin(), triangles_->end());
@@ -192,7 +201,21 @@ public:
   /// the triangle's vertex order).
   std::array<double, 3> project(const std::array<double, 3>& x, std::array<double, 3>& normal) const
   {
-    const auto hit = tree_->closest_point_and_primitive(K::Point_3(x[0] * scale_, x[1] * scale_, x[2] * scale_));
+    std::ptrdiff_t triangle = -1;
+    return project(x, normal, triangle);
+  }
+
+  /// The same, where `triangle` is a hint: on entry the index of a triangle near `x` (say the
+  /// answer for a nearby point) or -1, on return the index of the closest point's triangle. The
+  /// search starts from the hint's closest point, so that it visits only the triangles about as
+  /// near: the closest point is the same, up to the choice among equally close triangles.
+  std::array<double, 3> project(const std::array<double, 3>& x, std::array<double, 3>& normal, std::ptrdiff_t& triangle) const
+  {
+    const K::Point_3 q(x[0] * scale_, x[1] * scale_, x[2] * scale_);
+    const auto hit = triangle >= 0 && triangle < std::ptrdiff_t(triangles_->size())
+                         ? tree_->closest_point_and_primitive(q, start(q, triangles_->begin() + triangle))
+                         : tree_->closest_point_and_primitive(q);
+    triangle = hit.second - triangles_->cbegin();
     const K::Triangle_3& t = *hit.second;
     const K::Vector_3 u = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
     const double length = std::sqrt(u.squared_length());
@@ -204,6 +227,12 @@ public:
   std::size_t size() const { return triangles_->size(); }
 
 private:
+  // The closest point of one triangle to q, as the tree's search needs it to start from.
+  static std::pair<K::Point_3, Triangles::const_iterator> start(const K::Point_3& q, Triangles::const_iterator t)
+  {
+    return {K::Construct_projected_point_3()(*t, q), t};
+  }
+
   // Shared, so that copies (the named parameter is taken by value) share one tree.
   std::shared_ptr<Triangles> triangles_;
   std::shared_ptr<Tree> tree_;

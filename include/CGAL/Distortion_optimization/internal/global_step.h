@@ -270,7 +270,7 @@ private:
     // The unit normals of the sliding vertices' surfaces where they are (empty without sliding).
     std::vector<Vec> normal(p_.is_sliding.empty() ? 0 : p_.number_of_vertices());
     state_.workers().for_each(normal.size(), 1024, [&](std::size_t v) {
-      if(p_.slides(v)) p_.slide(state_.targets()[v], normal[v]);
+      if(p_.slides(v)) p_.slide(v, state_.targets()[v], normal[v]);
     });
     if(newton) {
       if(!newton_direction(normal, g, x)) return false;
@@ -584,7 +584,7 @@ private:
         if(!p_.is_free[v]) return;
         x[v] = x0[v] + length * direction[v];
         Vec normal;
-        if(p_.slides(v) && direction[v] != Vec::Zero()) x[v] = p_.slide(x[v], normal);
+        if(p_.slides(v) && direction[v] != Vec::Zero()) x[v] = p_.slide(v, x[v], normal);
       });
     };
     for(int k = 0, holds = 0; k < trials && t > 0;) {

@@ -53,7 +53,7 @@ public:
     const bool sliding = p_.slides(v);
     if(sliding) {
       Vec normal;
-      p_.slide(state_.targets()[v], normal);
+      p_.slide(v, state_.targets()[v], normal);
       g -= g.dot(normal) * normal;
     }
     const double g2 = g.squaredNorm();
@@ -160,7 +160,7 @@ private:
     const auto boundary_ok = [&] { return !guarded || guard->accepts_move(v, state_.targets()); };
     for(int k = 0; k < max_backtracks && t > 0; ++k, t *= 0.5) {
       x = x0 + t * d;
-      if(sliding) x = p_.slide(x, normal);
+      if(sliding) x = p_.slide(v, x, normal);
       if(x == x0) break;   // the step no longer changes the position
       if(state_.accept_trial(end - begin, ring_cell, e0, State::armijo * t * slope, false, boundary_ok)) {
         if(guarded) guard->commit_move(v, state_.targets());

@@ -18,8 +18,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -142,6 +144,14 @@ std::vector<unsigned char> read_free_vertices(const Adapter& adapter, const Name
   return is_free;
 }
 
+// Whether a sliding surface offers project(x, normal, hint) besides project(x, normal).
+template <class Surface, int n, class = void>
+struct takes_hints : std::false_type {};
+template <class Surface, int n>
+struct takes_hints<Surface, n, std::void_t<decltype(std::declval<const Surface&>().project(
+  std::declval<const std::array<double, n>&>(), std::declval<std::array<double, n>&>(), std::declval<std::ptrdiff_t&>()))>>
+  : std::true_type {};
+
 // With `sliding_boundary`: the free boundary vertices slide on that surface, which sees the user's
 // coordinates (the adapter's map is scaled by a power of two, undone exactly around the call).
 template <class Adapter, class NamedParameters>
@@ -154,10 +164,15 @@ void read_sliding_boundary(const Adapter& adapter, const NamedParameters& np, Op
     for(std::size_t i = 0; i < problem.is_sliding.size(); ++i)
       problem.is_sliding[i] = problem.is_free[i] && adapter.on_boundary[i];
     const double scale = adapter.scale;
-    problem.slide = [surface, scale](const Vector<n>& x, Vector<n>& normal) {
-      std::array<double, n> p, u;
+    // Where the surface takes hints, each vertex's is the one its last query left (a call is for
+    // one vertex, and no two threads move the same vertex at once).
+    constexpr bool hinted = takes_hints<decltype(surface), n>::value;
+    auto hints = std::make_shared<std::vector<std::ptrdiff_t>>(hinted ? problem.is_sliding.size() : 0, -1);
+    problem.slide = [surface, scale, hints](std::size_t v, const Vector<n>& x, Vector<n>& normal) {
+      std::array<double, n> p, u, y;
       for(int k = 0; k < n; ++k) p[k] = x[k] / scale;
-      const std::array<double, n> y = surface.project(p, u);
+      if constexpr(hinted) y = surface.project(p, u, (*hints)[v]);
+      else y = surface.project(p, u);
       Vector<n> z;
       for(int k = 0; k < n; ++k) {
         z[k] = y[k] * scale;

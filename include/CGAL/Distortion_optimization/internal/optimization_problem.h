@@ -39,9 +39,10 @@ struct Optimization_problem
   std::vector<std::uint32_t> ring_begin;   // ring of v: ring[ring_begin[v] .. ring_begin[v+1])
   std::vector<Incidence> ring;
   // A sliding boundary (named parameter sliding_boundary): these free vertices move on a surface;
-  // slide(x, normal) is its closest point to x, and sets the unit normal there. Empty: none.
+  // slide(v, x, normal) is its closest point to x, a position of vertex v (which the surface may
+  // use as a hint of where to search), and sets the unit normal there. Empty: none.
   std::vector<unsigned char> is_sliding;
-  std::function<Vector<n>(const Vector<n>&, Vector<n>&)> slide;
+  std::function<Vector<n>(std::size_t, const Vector<n>&, Vector<n>&)> slide;
 
   std::size_t number_of_vertices() const { return map.number_of_vertices(); }
   bool slides(std::size_t v) const { return !is_sliding.empty() && is_sliding[v]; }
@@ -129,7 +130,10 @@ Optimization_problem<n> part_of(const Optimization_problem<n>& p, const std::vec
     part.cell_weight.push_back(p.cell_weight[c]);
     part.total_weight += p.cell_weight[c];
   }
-  part.slide = p.slide;
+  if(p.slide)
+    part.slide = [slide = p.slide, global](std::size_t v, const Vector<n>& x, Vector<n>& normal) {
+      return slide(global[v], x, normal);
+    };
   part.build_rings();
   return part;
 }

@@ -124,7 +124,7 @@ public:
             g += p_.cell_weight[p_.ring[k].cell] * cell_gradient_[p_.ring[k].cell][p_.ring[k].local];
         if(p_.slides(v)) {
           Vector<n> normal;
-          p_.slide(p_.map.target[v], normal);
+          p_.slide(v, p_.map.target[v], normal);
           g -= g.dot(normal) * normal;
         }
         gradient->template segment<n>(n * v) = g;
@@ -193,7 +193,7 @@ std::size_t barrier_descent(Optimization_problem<n>& p, Barrier_energy<n>& energ
         for(std::size_t v = 0; v < nv; ++v)
           if(p.slides(v)) {
             Vector<n> normal;
-            p.map.target[v] = p.slide(p.map.target[v], normal);
+            p.map.target[v] = p.slide(v, p.map.target[v], normal);
           }
       if(guard && !guard->is_injective(p.map.target, &crossing)) {
         // The boundary would cross itself: hold the vertices of the crossing faces where they are
