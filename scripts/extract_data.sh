@@ -52,6 +52,9 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/three_peaks.off \
   data/meshes/bunny00.off \
   data/meshes/blobby.off \
+  data/meshes/helmet.off \
+  data/meshes/hand.off \
+  data/meshes/dino.off \
   data/meshes/pig.stl \
   data/meshes/sphere.ply \
   data/meshes/sphere.stl

@@ -7,18 +7,19 @@
 # (median of `repeats` runs; untangling included), its iterations and the final K.
 #
 #   bash benchmark/Distortion_optimization/bench_sliding.sh [repeats [threads [surface.off ...]]]
-#   (default: 1 repeat, 1 thread, helmet, hand and dino from libcgal-demo's data.tar.gz; run after
-#   scripts/test.sh)
+#   (default: 1 repeat, 1 thread, helmet, hand and dino from libcgal-demo's data.tar.gz, which
+#   scripts/extract_data.sh puts in build/data; run after scripts/test.sh)
 source "$(dirname "${BASH_SOURCE[0]}")/tool_common.sh"
 REPEATS=${1:-1}
 THREADS=${2:-1}
 shift $(($# < 2 ? $# : 2))
 SURFACES=("$@")
 if [ "${#SURFACES[@]}" -eq 0 ]; then
-  TARBALL=${CGAL_DOC_DIR:-/usr/share/doc/libcgal-dev}/data.tar.gz
-  [ -r "$TARBALL" ] || { echo "no $TARBALL (install libcgal-demo) and no surface given" >&2; exit 1; }
-  tar -xzf "$TARBALL" -C "$OUT" data/meshes/helmet.off data/meshes/hand.off data/meshes/dino.off
-  SURFACES=("$OUT"/data/meshes/{helmet,hand,dino}.off)
+  bash "$ROOT/scripts/extract_data.sh" "$ROOT/build/data" > /dev/null
+  SURFACES=("$ROOT"/build/data/{helmet,hand,dino}.off)
+  for surface in "${SURFACES[@]}"; do
+    [ -r "$surface" ] || { echo "no $surface (install libcgal-demo) and no surface given" >&2; exit 1; }
+  done
 fi
 
 printf '%-10s %7s %8s %7s %7s %11s %6s %10s\n' surface threads tets sliding "mesh s" "optimize s" iters "final K"
