@@ -788,6 +788,12 @@ TEST(BoundaryGuard, SeparatingAxesAreCertain)
     return true;
   };
   const double clearance = 64 * std::numeric_limits<double>::epsilon() * std::sqrt(3.);   // the guard's, near unit size
+  // The least rounding margin apart() may be given: 64 units in the last place of the largest coordinate.
+  const auto rounding = [](const Triangle& a, const Triangle& b) {
+    double largest = 0;
+    for(int i = 0; i < 3; ++i) largest = std::max({largest, a[i].cwiseAbs().maxCoeff(), b[i].cwiseAbs().maxCoeff()});
+    return 64 * std::numeric_limits<double>::epsilon() * largest;
+  };
   int wrong = 0, said_apart = 0, side_by_side = 0, found = 0;
   for(int i = 0; i < 1500; ++i) {
     const Triangle a = {point(), point(), point()};
@@ -804,12 +810,12 @@ TEST(BoundaryGuard, SeparatingAxesAreCertain)
     const Triangle neighbour = {a[0] + shift, a[1] + shift, (a[0] + a[1]) / 2 + shift + side * across + 1e-2 * u(random) * n};
     for(const double d : {0., clearance, 0.25 * clearance}) {
       for(const Triangle& b : {touching, neighbour}) {
-        if(!Guard3::apart(a, b, d)) continue;
+        if(!Guard3::apart(a, b, d, rounding(a, b))) continue;
         ++said_apart;
         wrong += !farther_than(a, b, d);
       }
       ++side_by_side;
-      found += Guard3::apart(a, neighbour, d);
+      found += Guard3::apart(a, neighbour, d, rounding(a, neighbour));
     }
   }
   EXPECT_EQ(wrong, 0);

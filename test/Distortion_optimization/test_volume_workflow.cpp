@@ -889,8 +889,8 @@ TEST(VolumeWorkflow, AFoldOfTheSlidingBoundaryHoldsBackOnlyItsOwnVertices)
 }
 
 // A hint (the triangle of an earlier answer) changes where the search starts, not what it finds:
-// the closest point's distance, and a triangle that holds it, whatever the hint (none, a near one,
-// a far one, one out of range).
+// the closest point's distance, a triangle that holds it, and the normal there, whatever the hint
+// (none, a near one, a far one, one out of range).
 TEST(VolumeWorkflow, HintsLeaveTheClosestPointsOfATriangleSurface)
 {
   DEMO_SURFACE(helmet, "helmet.off");
@@ -913,8 +913,8 @@ TEST(VolumeWorkflow, HintsLeaveTheClosestPointsOfATriangleSurface)
     const Point p = helmet.point(Surface::Vertex_index(static_cast<std::uint32_t>(any(random))));
     const std::array<double, 3> x = {p.x() + u(random), p.y() + u(random), p.z() + u(random)};
     const Point xp(x[0], x[1], x[2]);
-    std::array<double, 3> normal;
-    const std::array<double, 3> plain = surface.project(x, normal);
+    std::array<double, 3> plain_normal, normal;
+    const std::array<double, 3> plain = surface.project(x, plain_normal);
     const double closest = std::sqrt(CGAL::squared_distance(xp, Point(plain[0], plain[1], plain[2])));
     for(std::ptrdiff_t hint : {std::ptrdiff_t(-1), last, any_triangle(random), std::ptrdiff_t(triangles.size() + 5)}) {
       const std::array<double, 3> q = surface.project(x, normal, hint);
@@ -923,9 +923,81 @@ TEST(VolumeWorkflow, HintsLeaveTheClosestPointsOfATriangleSurface)
       const Point qp(q[0], q[1], q[2]);
       EXPECT_NEAR(std::sqrt(CGAL::squared_distance(xp, qp)), closest, 1e-12 * size) << i;
       EXPECT_LT(std::sqrt(CGAL::squared_distance(qp, triangles[hint])), 1e-12 * size) << i;
+      // The normal is the closest point's feature's, whichever triangle answered.
+      for(int k = 0; k < 3; ++k) EXPECT_NEAR(normal[k], plain_normal[k], 1e-12) << i;
       last = hint;
     }
   }
+}
+
+// The normal at a closest point is its feature's: on the cube [0, 1]^3 (two triangles a side), the
+// outward normal of the side, (+-1, +-1, 0) / sqrt 2 along an edge and (+-1, +-1, +-1) / sqrt 3 at
+// a corner (every point outside the cube knows which it projects to), whatever the hint; the
+// diagonal within a side is an edge whose normal is the side's. Where an edge's two triangles are
+// folded onto each other, their normals cancel: the answering triangle's is taken.
+TEST(VolumeWorkflow, TriangleSurfaceNormalsAreTheirFeatures)
+{
+  const std::vector<std::array<double, 3>> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+  const int sides[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                            {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  std::vector<std::array<std::array<double, 3>, 3>> triangles;
+  for(const auto& t : sides) triangles.push_back({p[t[0]], p[t[1]], p[t[2]]});
+  const DO::Triangle_surface cube(triangles);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
+  std::uniform_int_distribution<std::ptrdiff_t> any_hint(-1, 11);
+  int corners = 0, edges = 0;
+  for(int i = 0; i < 20000; ++i) {
+    const std::array<double, 3> x = {u(random), u(random), u(random)};
+    std::array<double, 3> expected = {0, 0, 0};
+    int outside = 0;
+    for(int k = 0; k < 3; ++k)
+      if(x[k] < 0 || x[k] > 1) expected[k] = x[k] < 0 ? -1 : 1, ++outside;
+    if(outside == 0) continue;
+    corners += outside == 3;
+    edges += outside == 2;
+    std::ptrdiff_t hint = any_hint(random);
+    std::array<double, 3> normal;
+    cube.project(x, normal, hint);
+    for(int k = 0; k < 3; ++k) EXPECT_NEAR(normal[k], expected[k] / std::sqrt(double(outside)), 1e-15) << i;
+  }
+  EXPECT_GT(corners, 100);
+  EXPECT_GT(edges, 1000);
+
+  // A sheet folded flat along the edge (0, 0, 0)-(1, 0, 0): the point beyond that edge projects onto it.
+  const DO::Triangle_surface fold({{{{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}}}, {{{1, 0, 0}, {0, 0, 0}, {0.5, 1, 0}}}});
+  std::array<double, 3> normal;
+  std::ptrdiff_t hint = -1;
+  const std::array<double, 3> q = fold.project({0.5, -1, 0.5}, normal, hint);
+  EXPECT_NEAR(q[1], 0, 1e-15);
+  EXPECT_NEAR(std::abs(normal[2]), 1, 1e-15);
+  EXPECT_EQ(normal[2], hint == 0 ? 1. : -1.);
+}
+
+// The surface of a complex's boundary is oriented outward (the vertices after a facet's index in
+// cyclic order face into the cell for odd indices): at each boundary vertex of a block of cubes,
+// the pseudo-normal is the outward normal of the block's side, edge or corner there.
+TEST(VolumeWorkflow, ABoundarySurfaceIsOrientedOutward)
+{
+  const test_complexes::C3t3 block = test_complexes::cube_complex(3);
+  test_complexes::Target_storage identity;
+  for(auto v : block.triangulation().finite_vertex_handles()) identity[v] = v->point().point();
+  const auto surface = DO::Triangle_surface::from_complex_boundary(block, test_complexes::Target_map(identity));
+  std::size_t checked = 0;
+  for(auto v : test_complexes::boundary_vertices(block)) {
+    const auto& p = identity.at(v);
+    std::array<double, 3> expected = {0, 0, 0}, normal;
+    int sides = 0;
+    for(int k = 0; k < 3; ++k)
+      if(p[k] == 0 || p[k] == 3) expected[k] = p[k] == 0 ? -1 : 1, ++sides;
+    const std::array<double, 3> q = surface.project({p.x(), p.y(), p.z()}, normal);
+    for(int k = 0; k < 3; ++k) {
+      EXPECT_EQ(q[k], p[k]);
+      EXPECT_NEAR(normal[k], expected[k] / std::sqrt(double(sides)), 1e-12) << p;
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4u * 4 * 4 - 2 * 2 * 2);
 }
 
 TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)

@@ -25,6 +25,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -91,9 +93,16 @@ private:
 \ingroup PkgDistortionOptimizationRef
 A closed triangle surface as a sliding surface, a model of `SlidingSurface` in 3D: closest points
 from an AABB tree of its triangles (built once, with its distance-query acceleration, so that
-queries can run on several threads), and as normal the unit normal of the closest triangle. The
-surface is copied: the mesh it was made from may change or go away. It takes hints (the triangle
-of the last answer), which spare most of a query for a point near the last one.
+queries can run on several threads). The normal at the closest point depends only on where that
+point lies: inside a triangle, the triangle's unit normal; on an edge, the normalized sum of the
+unit normals of the triangles along it; at a vertex, their mean weighted by the triangles'
+angles there (Thürmer and Wüthrich's pseudo-normal), not the normal of whichever of the equally
+close triangles answered. A vertex or edge is shared by the triangles with the same corner
+coordinates; normals are oriented by the triangles' vertex order, so that a consistently oriented
+surface gets consistent ones (where its triangles' normals cancel, as on a fold, the answering
+triangle's is taken). The surface is copied: the mesh it was made from may change or go away. It
+takes hints (the triangle of the last answer), which spare most of a query for a point near the
+last one.
 */
 class Triangle_surface
 {
@@ -132,6 +141,7 @@ public:
     }
     tree_ = std::make_shared<Tree>(triangles_->begin(), triangles_->end());
     tree_->accelerate_distance_queries();
+    normals_ = std::make_shared<const std::vector<Normals>>(feature_normals(*triangles_));
   }
 
   /// The surface of the faces of a triangle mesh.
@@ -178,7 +188,8 @@ public:
 
   /// The image of the boundary of a `Mesh_complex_3_in_triangulation_3` under a map of its
   /// vertices (a readable property map from `Vertex_handle` to `Point_3`, e.g. the start map):
-  /// its boundary facets, those between a cell of the complex and one outside it.
+  /// its boundary facets, those between a cell of the complex and one outside it, oriented
+  /// outward (facing away from their cell in the source, as under any map that inverts no cell).
   /// \throws Invalid_input as the constructor (a complex without boundary has no triangle).
   template <class C3T3, class TargetMap>
   static Triangle_surface from_complex_boundary(const C3T3& c3t3, const TargetMap& target)
@@ -187,18 +198,20 @@ public:
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
       for(int i = 0; i < 4; ++i)
         if(!c3t3.is_in_complex(c->neighbor(i))) {
+          // The vertices after i in cyclic order face away from it for even i, towards it for odd.
+          const int order[3] = {(i + 1) % 4, (i + (i % 2 == 0 ? 2 : 3)) % 4, (i + (i % 2 == 0 ? 3 : 2)) % 4};
           std::array<std::array<double, 3>, 3> t;
-          for(int j = 1; j < 4; ++j) {
-            const auto& p = get(target, c->vertex((i + j) % 4));
-            t[j - 1] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+          for(int j = 0; j < 3; ++j) {
+            const auto& p = get(target, c->vertex(order[j]));
+            t[j] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
           }
           triangles.push_back(t);
         }
     return Triangle_surface(triangles);
   }
 
-  /// The closest point of the surface to `x` and the unit normal of its triangle (oriented by
-  /// the triangle's vertex order).
+  /// The closest point of the surface to `x` and the unit normal there (see the class: its
+  /// triangle's inside a triangle, the edge's or vertex's pseudo-normal on an edge or a vertex).
   std::array<double, 3> project(const std::array<double, 3>& x, std::array<double, 3>& normal) const
   {
     std::ptrdiff_t triangle = -1;
@@ -216,10 +229,8 @@ public:
                          ? tree_->closest_point_and_primitive(q, start(q, triangles_->begin() + triangle))
                          : tree_->closest_point_and_primitive(q);
     triangle = hit.second - triangles_->cbegin();
-    const K::Triangle_3& t = *hit.second;
-    const K::Vector_3 u = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-    const double length = std::sqrt(u.squared_length());
-    normal = {u.x() / length, u.y() / length, u.z() / length};
+    const K::Vector_3& u = (*normals_)[triangle][feature(*hit.second, hit.first)];
+    normal = {u.x(), u.y(), u.z()};
     return {hit.first.x() / scale_, hit.first.y() / scale_, hit.first.z() / scale_};
   }
 
@@ -227,6 +238,77 @@ public:
   std::size_t size() const { return triangles_->size(); }
 
 private:
+  // Per triangle, the unit normals of its features: [0] its own, [1 + i] at its vertex i, [4 + i]
+  // on its edge from vertex i to vertex i + 1.
+  using Normals = std::array<K::Vector_3, 7>;
+
+  // Where p, a closest point of t, lies: 0 inside, 1 + i at vertex i, 4 + i on the edge from
+  // vertex i. A closest point on an edge or at a vertex is computed there up to a few roundings
+  // of its coordinates: a barycentric coordinate (p's distance to the opposite edge over the
+  // triangle's height there) within 64 of them over that height counts as 0.
+  static int feature(const K::Triangle_3& t, const K::Point_3& p)
+  {
+    const K::Vector_3 u = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double area = u.squared_length(), length = std::sqrt(area);
+    double coordinate = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+    for(int i = 0; i < 3; ++i) coordinate = std::max({coordinate, std::abs(t[i].x()), std::abs(t[i].y()), std::abs(t[i].z())});
+    const double rounding = 64 * std::numeric_limits<double>::epsilon() * coordinate;
+    int zeros = 0, off = 0, largest = 0;
+    double b[3];
+    for(int i = 0; i < 3; ++i) {   // b[i]: the coordinate of vertex i
+      const K::Vector_3 edge = t[(i + 2) % 3] - t[(i + 1) % 3];
+      b[i] = CGAL::cross_product(t[(i + 1) % 3] - p, t[(i + 2) % 3] - p) * u / area;
+      if(b[i] <= rounding * std::sqrt(edge.squared_length()) / length) ++zeros, off = i;
+      if(b[i] > b[largest]) largest = i;
+    }
+    if(zeros >= 2) return 1 + largest;
+    if(zeros == 1) return 4 + (off + 1) % 3;   // the edge opposite vertex `off`
+    return 0;
+  }
+
+  // The features' normals of a triangle soup whose vertices are shared by their coordinates.
+  static std::vector<Normals> feature_normals(const Triangles& triangles)
+  {
+    // A sum of weighted unit normals, normalized; where it is much shorter than its weights (normals
+    // that nearly cancel, as across a fold), `otherwise`.
+    struct Sum { K::Vector_3 v = K::Vector_3(0, 0, 0); double weight = 0; };
+    const auto unit = [](const Sum& sum, const K::Vector_3& otherwise) {
+      const double length = std::sqrt(sum.v.squared_length());
+      return length > 1e-3 * sum.weight ? sum.v / length : otherwise;
+    };
+    std::vector<Normals> normals(triangles.size());
+    std::map<std::array<double, 3>, std::size_t> index;   // a vertex's number by its coordinates
+    std::vector<std::array<std::size_t, 3>> corners(triangles.size());
+    for(std::size_t f = 0; f < triangles.size(); ++f) {
+      const K::Triangle_3& t = triangles[f];
+      const K::Vector_3 u = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+      normals[f][0] = u / std::sqrt(u.squared_length());
+      for(int i = 0; i < 3; ++i)
+        corners[f][i] = index.emplace(std::array<double, 3>{t[i].x(), t[i].y(), t[i].z()}, index.size()).first->second;
+    }
+    // Sums of unit normals: per vertex weighted by the angles, per edge (lower vertex first) plain.
+    std::vector<Sum> at_vertex(index.size());
+    std::map<std::pair<std::size_t, std::size_t>, Sum> along_edge;
+    for(std::size_t f = 0; f < triangles.size(); ++f)
+      for(int i = 0; i < 3; ++i) {
+        const K::Triangle_3& t = triangles[f];
+        const K::Vector_3 a = t[(i + 1) % 3] - t[i], b = t[(i + 2) % 3] - t[i];
+        const double angle = std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b);
+        Sum& vertex = at_vertex[corners[f][i]];
+        vertex.v = vertex.v + angle * normals[f][0];
+        vertex.weight += angle;
+        Sum& edge = along_edge[std::minmax(corners[f][i], corners[f][(i + 1) % 3])];
+        edge.v = edge.v + normals[f][0];
+        edge.weight += 1;
+      }
+    for(std::size_t f = 0; f < triangles.size(); ++f)
+      for(int i = 0; i < 3; ++i) {
+        normals[f][1 + i] = unit(at_vertex[corners[f][i]], normals[f][0]);
+        normals[f][4 + i] = unit(along_edge.at(std::minmax(corners[f][i], corners[f][(i + 1) % 3])), normals[f][0]);
+      }
+    return normals;
+  }
+
   // The closest point of one triangle to q, as the tree's search needs it to start from.
   static std::pair<K::Point_3, Triangles::const_iterator> start(const K::Point_3& q, Triangles::const_iterator t)
   {
@@ -236,6 +318,7 @@ private:
   // Shared, so that copies (the named parameter is taken by value) share one tree.
   std::shared_ptr<Triangles> triangles_;
   std::shared_ptr<Tree> tree_;
+  std::shared_ptr<const std::vector<Normals>> normals_;
   double scale_ = 1;   // a power of two: the tree's coordinates are the surface's times scale_
 };
 

@@ -163,11 +163,12 @@ public:
     if(!target[v].allFinite()) return false;
     const std::uint32_t* ring = vertex_faces_.data() + first_face_[v];
     const std::uint32_t* ring_end = vertex_faces_.data() + first_face_[v + 1];
+    const double fraction = keeps_clearance() ? 1. : 0.;   // of the clearance moves keep
     // The ring's faces may have left their stored boxes: test them against each other directly.
     for(const std::uint32_t* f = ring; f != ring_end; ++f) {
       if(is_degenerate(*f, target)) return false;
       for(const std::uint32_t* g = ring; g != f; ++g)
-        if(improper(*f, *g, target, keeps_clearance() ? 1. : 0.)) return false;
+        if(improper(*f, *g, target, fraction)) return false;
     }
     // Then one traversal for the whole ring (the star's box), each candidate against each ring
     // face; boxes grown by twice the ring's clearance, which bounds any candidate's near it.
@@ -177,7 +178,7 @@ public:
       ring_boxes_.push_back(face_box(*f, target));
       star.extend(ring_boxes_.back());
     }
-    const double near = keeps_clearance() ? 2 * clearance(star) : 0.;
+    const double near = 2 * fraction * clearance(star);
     for(Box& b : ring_boxes_) b = grown(b, near);
     star = grown(star, near);
     const bool apart = visit(star, [&](std::uint32_t g) {   // false stops the traversal
@@ -186,7 +187,7 @@ public:
       if(!box.intersects(star)) return true;
       if(degenerate_[g]) return false;
       for(std::size_t i = 0; i < ring_boxes_.size(); ++i)
-        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target, keeps_clearance() ? 1. : 0.)) return false;
+        if(box.intersects(ring_boxes_[i]) && improper(ring[i], g, target, fraction)) return false;
       return true;
     });
     return apart && (!several_pieces() || sweeps_no_other_piece(v, target));
@@ -296,14 +297,13 @@ public:
   // Whether two triangles are certainly more than d >= 0 apart (so that they neither meet nor
   // come within d), by a separating axis in doubles: a triangle's normal, or the normal of one of
   // its edges within its plane, which parts the disjoint and nearly coplanar faces that a smooth
-  // boundary puts side by side. The rounding of the projections, a few units in the last place of
-  // the largest coordinate, is added to d: a yes is certain; a no leaves the pair to the exact
-  // tests (Gottschalk, Lin and Manocha's separating axes, 1996, with a margin).
-  static bool apart(const std::array<Vector<3>, 3>& a, const std::array<Vector<3>, 3>& b, double d)
+  // boundary puts side by side. `rounding` bounds the rounding of the projections and is added to
+  // d: 64 units in the last place of the largest coordinate of the six points (the error analysis
+  // gives under 25), or more, as the clearance() of their box. A yes is certain; a no leaves the
+  // pair to the exact tests (Gottschalk, Lin and Manocha's separating axes, 1996, with a margin).
+  static bool apart(const std::array<Vector<3>, 3>& a, const std::array<Vector<3>, 3>& b, double d, double rounding)
   {
-    double largest = 0;
-    for(int i = 0; i < 3; ++i) largest = std::max({largest, a[i].cwiseAbs().maxCoeff(), b[i].cwiseAbs().maxCoeff()});
-    const double slack = d + 64 * std::numeric_limits<double>::epsilon() * largest;
+    const double slack = d + rounding;
     const auto separates = [&](const Vector<3>& axis) {
       double a_low = infinity, a_high = -infinity, b_low = infinity, b_high = -infinity;
       for(int i = 0; i < 3; ++i) {
@@ -657,8 +657,8 @@ private:
       const K::Point_3 a0 = point(a[0], t), a1 = point(a[1], t), a2 = point(a[2], t);
       const K::Point_3 b0 = point(b[0], t), b1 = point(b[1], t), b2 = point(b[2], t);
       if(shared == 0) {
-        const double d = clearance_fraction * clearance(fi, gi, t);
-        if(apart({t[a[0]], t[a[1]], t[a[2]]}, {t[b[0]], t[b[1]], t[b[2]]}, d)) return false;
+        const double c = clearance(fi, gi, t), d = clearance_fraction * c;
+        if(apart({t[a[0]], t[a[1]], t[a[2]]}, {t[b[0]], t[b[1]], t[b[2]]}, d, c)) return false;
         const K::Triangle_3 e(a0, a1, a2), g(b0, b1, b2);
         return CGAL::do_intersect(e, g) || too_close(e, g, d);
       }
