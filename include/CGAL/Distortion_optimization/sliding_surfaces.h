@@ -96,13 +96,13 @@ from an AABB tree of its triangles (built once, with its distance-query accelera
 queries can run on several threads). The normal at the closest point depends only on where that
 point lies: inside a triangle, the triangle's unit normal; on an edge, the normalized sum of the
 unit normals of the triangles along it; at a vertex, their mean weighted by the triangles'
-angles there (Thürmer and Wüthrich's pseudo-normal), not the normal of whichever of the equally
-close triangles answered. A vertex or edge is shared by the triangles with the same corner
-coordinates; normals are oriented by the triangles' vertex order, so that a consistently oriented
-surface gets consistent ones (where its triangles' normals cancel, as on a fold, the answering
-triangle's is taken). The surface is copied: the mesh it was made from may change or go away. It
-takes hints (the triangle of the last answer), which spare most of a query for a point near the
-last one.
+angles there (the pseudo-normal of Thurmer and Wuthrich, "Computing vertex normals from polygonal
+facets", 1998), not the normal of whichever of the equally close triangles answered. A vertex or
+edge is shared by the triangles with the same corner coordinates; normals are oriented by the
+triangles' vertex order, so that a consistently oriented surface gets consistent ones (where its
+triangles' normals cancel, as on a fold, the answering triangle's is taken). The surface is
+copied: the mesh it was made from may change or go away. It takes hints (the triangle of the last
+answer), which spare most of a query for a point near the last one.
 */
 class Triangle_surface
 {
