@@ -29,6 +29,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -199,7 +200,8 @@ public:
       for(int i = 0; i < 4; ++i)
         if(!c3t3.is_in_complex(c->neighbor(i))) {
           // The vertices after i in cyclic order face away from it for even i, towards it for odd.
-          const int order[3] = {(i + 1) % 4, (i + (i % 2 == 0 ? 2 : 3)) % 4, (i + (i % 2 == 0 ? 3 : 2)) % 4};
+          int order[3] = {(i + 1) % 4, (i + 2) % 4, (i + 3) % 4};
+          if(i % 2 == 1) std::swap(order[1], order[2]);
           std::array<std::array<double, 3>, 3> t;
           for(int j = 0; j < 3; ++j) {
             const auto& p = get(target, c->vertex(order[j]));
