@@ -1,6 +1,7 @@
 // minimize_distortion on Mesh_complex_3_in_triangulation_3: Mesh_3 and TetGen meshes, the radial
 // map of the paper's Fig. 5, start maps, write-back only to complex vertices.
 
+#include "kuhn_block.h"
 #include "test_complexes.h"
 
 #include <CGAL/Distortion_optimization/IO/medit.h>
@@ -583,6 +584,72 @@ TEST(TetrahedralMeshes, PolyhedralDomainFromAClosedSurfaceMesh)
   const auto r = CGAL::minimize_distortion(c3t3, target, DO::MIPS(), CGAL::parameters::number_of_iterations(5));
   EXPECT_LE(r.final_energy, r.initial_energy);
   EXPECT_EQ(r.inverted_cells, 0u);
+}
+
+// With threads, c3t3_from_tetrahedra() builds the complex beside its last manifold checks: on a
+// block of 5^3 cubes and on random damaged subsets of it (edges and vertices pinched, a cell
+// repeated, a facet shared by three), one, two and three threads give the same complex or the same
+// message, and a refused input leaves the complex as it was; so for a fold.
+TEST(TetrahedralMeshes, ComplexFromTetrahedraIsTheSameOnAnyNumberOfThreads)
+{
+  const DO::IO::Tetrahedron_soup block = kuhn_block(5);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  std::size_t failures = 0;
+  for(int trial = 0; trial < 40; ++trial) {
+    std::vector<std::array<std::size_t, 4>> cells;
+    const double keep = trial == 0 ? 1. : 0.4 + 0.6 * uniform(random);
+    for(const auto& c : block.cells)
+      if(uniform(random) < keep) cells.push_back(c);
+    if(trial % 5 == 1) cells.push_back(cells[cells.size() / 2]);
+    const std::size_t apex = cells.back()[3];
+    if(trial % 7 == 2 && std::find(cells[3].begin(), cells[3].end(), apex) == cells[3].end())
+      cells.push_back({cells[3][0], cells[3][1], cells[3][2], apex});
+    std::vector<std::string> messages;
+    std::vector<std::vector<std::array<double, 3>>> points;
+    std::vector<std::vector<std::array<std::size_t, 4>>> tetrahedra;
+    for(int threads : {1, 2, 3}) {
+      C3t3 c3t3;
+      DO::c3t3_from_tetrahedra(block.points, {block.cells[0]}, c3t3);   // replaced, or kept on a refusal
+      try {
+        const auto handles = DO::c3t3_from_tetrahedra(block.points, cells, c3t3, 1, DO::parameters::number_of_threads(threads));
+        messages.push_back("");
+        EXPECT_TRUE(c3t3.triangulation().tds().is_valid()) << trial;
+        EXPECT_TRUE(c3t3.triangulation().is_valid()) << trial;
+        for(std::size_t i = 0; i < handles.size(); ++i) {
+          if(handles[i] == Vertex_handle()) continue;
+          EXPECT_EQ(handles[i]->point().point(), Point_3(block.points[i][0], block.points[i][1], block.points[i][2]));
+        }
+      } catch(const DO::Invalid_input& e) {
+        messages.push_back(e.what());
+        EXPECT_EQ(c3t3.number_of_cells_in_complex(), 1u) << trial;
+      }
+      points.emplace_back();
+      tetrahedra.emplace_back();
+      DO::tetrahedra_from_c3t3(c3t3, points.back(), tetrahedra.back());
+    }
+    for(int k : {1, 2}) {
+      EXPECT_EQ(messages[k], messages[0]) << trial;
+      EXPECT_EQ(points[k], points[0]) << trial;
+      EXPECT_EQ(tetrahedra[k], tetrahedra[0]) << trial;
+    }
+    if(messages[0].empty()) {
+      EXPECT_EQ(tetrahedra[0].size(), cells.size()) << trial;
+    }
+    failures += !messages[0].empty();
+  }
+  EXPECT_GT(failures, 20u);
+  // Two cells on the same side of their common facet: the fold check, beside the manifold checks.
+  const std::vector<std::array<double, 3>> fan = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 1}};
+  for(int threads : {1, 2}) {
+    C3t3 c3t3;
+    try {
+      DO::c3t3_from_tetrahedra(fan, {{0, 1, 2, 3}, {2, 1, 0, 4}}, c3t3, 1, DO::parameters::number_of_threads(threads));
+      ADD_FAILURE() << "a folded pair of tetrahedra was accepted on " << threads << " threads";
+    } catch(const DO::Invalid_input& e) {
+      EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 1 lie on the same side of their common facet"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(TetrahedralMeshes, BadInput)
