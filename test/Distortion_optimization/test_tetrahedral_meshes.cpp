@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -649,6 +650,36 @@ TEST(TetrahedralMeshes, ComplexFromTetrahedraIsTheSameOnAnyNumberOfThreads)
     } catch(const DO::Invalid_input& e) {
       EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 1 lie on the same side of their common facet"), std::string::npos) << e.what();
     }
+  }
+}
+
+// The adapter numbers the vertices in the order the cells first reach them (tetrahedra_from_c3t3()'s),
+// marks those of the block's faces as on the boundary, and of two vertices with non-finite targets
+// names the first by that number.
+TEST(TetrahedralMeshes, AdapterNamesTheFirstNonFiniteTarget)
+{
+  const DO::IO::Tetrahedron_soup block = kuhn_block(3);
+  C3t3 c3t3;
+  const auto handles = DO::c3t3_from_tetrahedra(block.points, block.cells, c3t3);
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tets;
+  const auto order = DO::tetrahedra_from_c3t3(c3t3, points, tets);
+  Target_storage storage;
+  for(std::size_t i = 0; i < handles.size(); ++i) storage[handles[i]] = handles[i]->point().point();
+  const auto adapter = DO::internal::make_c3t3_adapter(c3t3, Target_map(storage), CGAL::parameters::default_values());
+  ASSERT_EQ(adapter.vertex_of, order);
+  for(std::size_t i = 0; i < order.size(); ++i) {
+    const auto& p = points[i];
+    const bool face = std::any_of(p.begin(), p.end(), [](double x) { return x == 0 || x == 3; });
+    EXPECT_EQ(adapter.on_boundary[i] != 0, face) << i;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for(std::size_t i : {std::size_t(40), std::size_t(17)}) storage[order[i]] = Point_3(nan, 0, 0);
+  try {
+    CGAL::compute_distortion(c3t3, Target_map(storage), DO::MIPS());
+    ADD_FAILURE() << "non-finite targets were accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 17 has a non-finite target coordinate"), std::string::npos) << e.what();
   }
 }
 

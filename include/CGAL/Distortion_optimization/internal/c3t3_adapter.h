@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -107,70 +106,79 @@ public:
   GeomTraits traits;
   double scale = 1;                           // of map's coordinates (coordinate_scale)
 
+  // The cells in the complex's order, their vertices numbered in the order the cells first reach
+  // them. Two passes: the handles first, then the geometry and the boundary facets, whose four
+  // neighbours per cell lie anywhere in memory: in a loop of its own their loads overlap (54K
+  // cells: 8 ms against 14 in one pass). Errors are those a single pass in order meets first.
   template <class TargetMap>
   C3t3_adapter(const C3T3& c3t3, const TargetMap& target, const GeomTraits& gt) : traits(gt)
   {
     const Triangulation& tr = c3t3.triangulation();
     auto point = tr.geom_traits().construct_point_3_object();
+    const std::size_t expected = c3t3.number_of_cells_in_complex();
     Handle_index index(tr.number_of_vertices());
-    const auto index_of = [&](Vertex_handle v) {
-      bool inserted;
-      const std::uint32_t i = index.find_or_insert(&*v, static_cast<std::uint32_t>(vertex_of.size()), inserted);
-      if(inserted) {
+    std::vector<typename Simplicial_map<3>::Cell> cells;
+    std::vector<Vector<3>> source;   // per vertex
+    cells.reserve(expected);
+    cell_of.reserve(expected);
+    map.reserve(expected, tr.number_of_vertices());
+    vertex_of.reserve(tr.number_of_vertices());
+    on_boundary.reserve(tr.number_of_vertices());
+    source.reserve(tr.number_of_vertices());
+    // Up to the first vertex with a non-finite target, whose message then follows the earlier
+    // cells' orientation tests.
+    std::string non_finite;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+      typename Simplicial_map<3>::Cell cell;
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_handle v = c->vertex(i);
+        bool inserted;
+        cell[i] = index.find_or_insert(&*v, static_cast<std::uint32_t>(vertex_of.size()), inserted);
+        if(!inserted) continue;
         const auto& y = get(target, v);
-        Vector<3> x(CGAL::to_double(y.x()), CGAL::to_double(y.y()), CGAL::to_double(y.z()));
-        if(!x.allFinite())
-          throw Invalid_input("vertex " + std::to_string(vertex_of.size()) + " has a non-finite target coordinate");
+        const Vector<3> x(CGAL::to_double(y.x()), CGAL::to_double(y.y()), CGAL::to_double(y.z()));
+        if(!x.allFinite()) {
+          non_finite = "vertex " + std::to_string(vertex_of.size()) + " has a non-finite target coordinate";
+          break;
+        }
+        const auto& q = point(tr.point(c, i));
+        source.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
         map.target.push_back(x);
         vertex_of.push_back(v);
         on_boundary.push_back(0);
       }
-      return i;
-    };
-    using P = typename GeomTraits::Point_3;
-    std::vector<std::pair<typename Simplicial_map<3>::Cell, Matrix<3>>> cells;
-    cells.reserve(c3t3.number_of_cells_in_complex());
-    cell_of.reserve(c3t3.number_of_cells_in_complex());
-    map.reserve(c3t3.number_of_cells_in_complex(), tr.number_of_vertices());
-    vertex_of.reserve(tr.number_of_vertices());
-    on_boundary.reserve(tr.number_of_vertices());
-    double source_largest = 0, target_largest = 0;
-    Vector<3> low = Vector<3>::Constant(std::numeric_limits<double>::infinity()), high = -low;  // the source's box
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-      typename Simplicial_map<3>::Cell cell;
-      std::array<Vector<3>, 4> x;
-      std::array<P, 4> p;
-      for(int i = 0; i < 4; ++i) {
-        cell[i] = index_of(c->vertex(i));
-        const auto& q = point(tr.point(c, i));
-        x[i] = Vector<3>(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-        p[i] = P(x[i][0], x[i][1], x[i][2]);
-        source_largest = std::max(source_largest, x[i].cwiseAbs().maxCoeff());
-        low = low.cwiseMin(x[i]);
-        high = high.cwiseMax(x[i]);
-      }
-      if(traits.orientation_3_object()(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE)
-        throw Invalid_input("source cell " + std::to_string(cell_of.size()) + " of the complex is not positively oriented "
-                            "(degenerate)");
-      Matrix<3> Dm;
-      for(int k = 0; k < 3; ++k) Dm.col(k) = x[k + 1] - x[0];
-      cells.emplace_back(cell, Dm);
+      if(!non_finite.empty()) break;
+      cells.push_back(cell);
       cell_of.push_back(Cell_handle(c));
+    }
+    double source_largest = 0, target_largest = 0;
+    for(const Vector<3>& x : source) source_largest = std::max(source_largest, x.cwiseAbs().maxCoeff());
+    for(const Vector<3>& y : map.target) target_largest = std::max(target_largest, y.cwiseAbs().maxCoeff());
+    scale = coordinate_scale(source_largest, target_largest);
+    map.resize_cells(cells.size());
+    std::size_t flat = cells.size();   // the first cell flat in doubles
+    using P = typename GeomTraits::Point_3;
+    for(std::size_t k = 0; k < cells.size(); ++k) {
+      const auto& cell = cells[k];
+      std::array<P, 4> p;
+      for(int i = 0; i < 4; ++i) p[i] = P(source[cell[i]][0], source[cell[i]][1], source[cell[i]][2]);
+      if(traits.orientation_3_object()(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE)
+        throw Invalid_input("source cell " + std::to_string(k) + " of the complex is not positively oriented (degenerate)");
+      Matrix<3> Dm;
+      for(int j = 0; j < 3; ++j) Dm.col(j) = source[cell[j + 1]] - source[cell[0]];
+      if(!map.set_cell(k, cell, scale * Dm, +1)) flat = std::min(flat, k);
       for(int i = 0; i < 4; ++i)
-        if(!c3t3.is_in_complex(c->neighbor(i)))
+        if(!c3t3.is_in_complex(cell_of[k]->neighbor(i)))
           for(int j = 0; j < 4; ++j)
             if(j != i) on_boundary[cell[j]] = 1;
     }
-    if(cell_of.empty())
-      throw Invalid_input("the complex has no cell");
-    for(const Vector<3>& y : map.target) target_largest = std::max(target_largest, y.cwiseAbs().maxCoeff());
-    scale = coordinate_scale(source_largest, target_largest);
-    check_comparable_sizes<3>((high - low).maxCoeff(), largest_extent(map.target));
+    if(!non_finite.empty()) throw Invalid_input(non_finite);
+    if(cells.empty()) throw Invalid_input("the complex has no cell");
+    check_comparable_sizes<3>(largest_extent(source), largest_extent(map.target));
+    if(flat < cells.size())
+      throw Invalid_input("source cell " + std::to_string(flat) + " of the complex is degenerate in double precision (its "
+                          "vertices are not exactly coplanar, but so nearly that its rounded edges are)");
     for(Vector<3>& y : map.target) y *= scale;
-    for(std::size_t c = 0; c < cells.size(); ++c)
-      if(!map.add_cell(cells[c].first, scale * cells[c].second, +1))
-        throw Invalid_input("source cell " + std::to_string(c) + " of the complex is degenerate in double precision (its "
-                            "vertices are not exactly coplanar, but so nearly that its rounded edges are)");
   }
 
   // Writes the targets x of the free vertices into the target map.

@@ -109,13 +109,30 @@ struct Simplicial_map
   // be evaluated on the cell).
   bool add_cell(const Cell& cell, const Matrix<n>& Dm, int sign)
   {
+    resize_cells(cells.size() + 1);
+    if(set_cell(cells.size() - 1, cell, Dm, sign)) return true;
+    resize_cells(cells.size() - 1);
+    return false;
+  }
+
+  // The same for cell k of `count` cells sized at once: threads may then fill different cells.
+  // Returns false, leaving cell k as it was, where add_cell() would.
+  void resize_cells(std::size_t count)
+  {
+    cells.resize(count);
+    inverse_rest.resize(count);
+    rest_volume.resize(count);
+    rest_sign.resize(count);
+  }
+  bool set_cell(std::size_t k, const Cell& cell, const Matrix<n>& Dm, int sign)
+  {
     const double det = Dm.determinant();
     const Matrix<n> inverse = Dm.inverse();
     if(!(det != 0) || !inverse.allFinite()) return false;
-    cells.push_back(cell);
-    inverse_rest.push_back(inverse);
-    rest_volume.push_back(std::abs(det) / (n == 2 ? 2. : 6.));
-    rest_sign.push_back(static_cast<signed char>(sign > 0 ? 1 : -1));
+    cells[k] = cell;
+    inverse_rest[k] = inverse;
+    rest_volume[k] = std::abs(det) / (n == 2 ? 2. : 6.);
+    rest_sign[k] = static_cast<signed char>(sign > 0 ? 1 : -1);
     return true;
   }
 
