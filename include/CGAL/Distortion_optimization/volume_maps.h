@@ -295,8 +295,9 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
 Replaces the targets of the free vertices by the harmonic map: the minimizer of the Dirichlet
 energy sum_c w(c) |J_c|^2 for the targets of the fixed ones, with the cell weights w(c) of
 `CGAL::minimize_distortion()` (by default proportional to the volumes: the volume-weighted
-cotangent Laplacian), solved by incomplete-Cholesky conjugate gradients to a relative residual of
-1e-10. The optimizer's harmonic start is the same solve. The result may invert cells where the
+cotangent Laplacian), solved by conjugate gradients with Jacobi's preconditioner to a relative
+residual of 1e-10 (on the threads of `number_of_threads`). The optimizer's harmonic start is the
+same solve. The result may invert cells where the
 boundary is not convex; `CGAL::compute_distortion()` tells.
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
