@@ -728,17 +728,9 @@ TEST(Complexes, ManifoldCheckIsTheSameOnAnyNumberOfThreads)
 {
   const IO::Tetrahedron_soup block = kuhn_block(6);
   std::mt19937 random(11);
-  std::uniform_real_distribution<double> uniform(0, 1);
   std::size_t failures = 0;
   for(int trial = 0; trial < 60; ++trial) {
-    std::vector<std::array<std::size_t, 4>> cells;
-    const double keep = trial == 0 ? 1. : 0.4 + 0.6 * uniform(random);
-    for(const auto& c : block.cells)
-      if(uniform(random) < keep) cells.push_back(c);
-    if(trial % 5 == 1) cells.push_back(cells[cells.size() / 2]);
-    const std::size_t apex = cells.back()[3];   // on a facet of cell 3: a third cell there if 3 has a neighbour
-    if(trial % 7 == 2 && apex != cells[3][0] && apex != cells[3][1] && apex != cells[3][2] && apex != cells[3][3])
-      cells.push_back({cells[3][0], cells[3][1], cells[3][2], apex});
+    const std::vector<std::array<std::size_t, 4>> cells = damaged_cells(block.cells, trial, random);
     std::vector<std::string> messages;
     std::vector<std::vector<std::uint32_t>> adjacencies;
     for(int threads : {1, 2, 3}) {

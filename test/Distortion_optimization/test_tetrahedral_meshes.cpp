@@ -595,17 +595,9 @@ TEST(TetrahedralMeshes, ComplexFromTetrahedraIsTheSameOnAnyNumberOfThreads)
 {
   const DO::IO::Tetrahedron_soup block = kuhn_block(5);
   std::mt19937 random(5);
-  std::uniform_real_distribution<double> uniform(0, 1);
   std::size_t failures = 0;
   for(int trial = 0; trial < 40; ++trial) {
-    std::vector<std::array<std::size_t, 4>> cells;
-    const double keep = trial == 0 ? 1. : 0.4 + 0.6 * uniform(random);
-    for(const auto& c : block.cells)
-      if(uniform(random) < keep) cells.push_back(c);
-    if(trial % 5 == 1) cells.push_back(cells[cells.size() / 2]);
-    const std::size_t apex = cells.back()[3];
-    if(trial % 7 == 2 && std::find(cells[3].begin(), cells[3].end(), apex) == cells[3].end())
-      cells.push_back({cells[3][0], cells[3][1], cells[3][2], apex});
+    const std::vector<std::array<std::size_t, 4>> cells = damaged_cells(block.cells, trial, random);
     std::vector<std::string> messages;
     std::vector<std::vector<std::array<double, 3>>> points;
     std::vector<std::vector<std::array<std::size_t, 4>>> tetrahedra;
