@@ -62,8 +62,8 @@ struct First_failure
 // a sequential pass finds them: the lowest vertex's, facets before edges before vertices.
 //
 // `alongside`, if given, runs once the adjacency is complete: with threads, beside the edge and
-// vertex checks (the sequential work that needs only the adjacency, such as building a
-// triangulation, then costs no time of its own); without, after them. It must not throw.
+// vertex checks (sequential work that needs only the adjacency, such as building a triangulation,
+// then overlaps them); without, after them. It must not throw.
 constexpr std::uint32_t no_tetrahedron = std::numeric_limits<std::uint32_t>::max();
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                                       std::vector<std::uint32_t>& across, const Workers& workers = Workers(),

@@ -291,7 +291,7 @@ public:
     } else {
       for(std::size_t v = 0; v < x.size(); ++v)
         if(column_[v] >= 0) X.row(column_[v]) = targets[v].transpose();
-      // A start that is already harmonic (one an earlier run wrote) needs no factorization (at 54K
+      // A start that is already harmonic (one an earlier run wrote) needs no solve (at 54K
       // tetrahedra, 10 ms of a 0.6 s run).
       const Eigen::MatrixXd residual = rhs - P_ * X;
       const double tolerance2 = harmonic_tolerance * harmonic_tolerance;

@@ -115,8 +115,7 @@ struct Simplicial_map
     return false;
   }
 
-  // The same for cell k of `count` cells sized at once: threads may then fill different cells.
-  // Returns false, leaving cell k as it was, where add_cell() would.
+  // The cells' arrays sized for `count` cells, for set_cell() to fill.
   void resize_cells(std::size_t count)
   {
     cells.resize(count);
@@ -124,6 +123,8 @@ struct Simplicial_map
     rest_volume.resize(count);
     rest_sign.resize(count);
   }
+  // add_cell() in place, for cell k of arrays sized by resize_cells() (the complex's adapter sizes
+  // them once). Returns false, leaving cell k as it was, where add_cell() would.
   bool set_cell(std::size_t k, const Cell& cell, const Matrix<n>& Dm, int sign)
   {
     const double det = Dm.determinant();
