@@ -15,35 +15,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/tool_common.sh"
 CELL=${1:-0.0875}
 REPEATS=${2:-3}
 
-cat > "$OUT/cube.off" <<'EOF'
-OFF
-8 12 0
--1 -1 -1
-1 -1 -1
--1 1 -1
-1 1 -1
--1 -1 1
-1 -1 1
--1 1 1
-1 1 1
-3 0 2 1
-3 1 2 3
-3 4 5 6
-3 5 7 6
-3 0 1 4
-3 1 5 4
-3 2 6 3
-3 3 6 7
-3 0 4 2
-3 2 4 6
-3 1 3 5
-3 3 7 5
-EOF
-"$TOOL" --source "$OUT/cube.off" --start radial --center 0,0,0 --cell-size "$CELL" --iterations 0 --quiet \
-  --mesh-output "$OUT/source.mesh" --output "$OUT/radial.mesh" > /dev/null
-# The stretch of the source's vertices (the Medit vertex lines: x y z label).
-awk '/^Vertices/ { print; getline; print; n = $1; next }
-     n > 0 { printf "%.17g %s %s %s\n", exp(2 * $1), $2, $3, $4; --n; next } { print }' "$OUT/source.mesh" > "$OUT/stretch.mesh"
+make_cube_pairs "$CELL"
 echo "cube [-1,1]^3, Mesh_3 cell size $CELL: $(awk '/^Tetrahedra/ { getline; print; exit }' "$OUT/source.mesh") tetrahedra"
 
 printf '%-26s %7s %10s %12s %6s %14s\n' case threads "wall s" "optimize s" iters "final E"
