@@ -63,7 +63,8 @@ struct First_failure
 //
 // `alongside`, if given, runs once the adjacency is complete: with threads, beside the edge and
 // vertex checks (sequential work that needs only the adjacency, such as building a triangulation,
-// then overlaps them); without, after them. It must not throw.
+// then overlaps them), so it may see an input that they refuse; without threads, only after they
+// passed. It must not throw.
 constexpr std::uint32_t no_tetrahedron = std::numeric_limits<std::uint32_t>::max();
 inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                                       std::vector<std::uint32_t>& across, const Workers& workers = Workers(),
@@ -242,14 +243,14 @@ inline void check_manifold_tetrahedra(const std::vector<std::array<std::size_t, 
           }
     }
   };
-  if(alongside && workers.threads() > 1) {
+  const bool beside = alongside && workers.threads() > 1;
+  if(beside)
     workers.for_each(2, 1, [&](std::size_t k) { k == 0 ? workers.for_each(ranges, 1, check_range) : alongside(); });
-  } else {
+  else
     workers.for_each(ranges, 1, check_range);
-    if(alongside) alongside();
-  }
   First_failure::throw_lowest(failures);
   First_failure::throw_lowest(vertex_failures);
+  if(alongside && !beside) alongside();
 }
 
 // Positively oriented tetrahedra sharing a facet must lie on its two sides; two on the same side
@@ -287,7 +288,9 @@ inline void check_cells_do_not_fold(const std::vector<std::array<std::size_t, 4>
 // the way CGAL's build_triangulation() does (tet_soup_to_c3t3.h), but from the adjacency already
 // found rather than from a hash map of facets, which took most of the time (69K tetrahedra: 0.12 s).
 // Each boundary facet gets an infinite cell, and those meet across the boundary's edges. A point
-// in no tetrahedron gets no vertex: its handle is Vertex_handle().
+// in no tetrahedron gets no vertex: its handle is Vertex_handle(). With threads it runs beside the
+// edge and vertex checks, on input they may still refuse (an edge or vertex pinched): it must then
+// at most throw or build a triangulation that is thrown away, never assume a manifold.
 template <class Tr>
 std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::vector<typename Tr::Point>& points,
                                                             const std::vector<std::array<std::size_t, 4>>& cells,
@@ -355,15 +358,16 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
 } // namespace internal
 
 /// \ingroup PkgDistortionOptimizationRef
-/// Fills `c3t3` (a `CGAL::Mesh_complex_3_in_triangulation_3`, cleared first) with the given
+/// Replaces the content of `c3t3` (a `CGAL::Mesh_complex_3_in_triangulation_3`) with the given
 /// tetrahedra, all in subdomain `label` (> 0), vertex `i` at `points[i]`: the way to hand a mesh
 /// from TetGen or a Medit file to `CGAL::minimize_distortion()`. Negatively oriented tetrahedra
 /// are stored with two vertices swapped (a simplicial map does not depend on the vertex order).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{number_of_threads}
-///     \cgalParamDescription{threads for the orientation and manifold checks; `0` for all the
-///                           hardware offers (`Distortion_optimization::parameters::number_of_threads()`)}
+///     \cgalParamDescription{threads for the orientation, manifold and fold checks, beside which the
+///                           complex is then built; `0` for all the hardware offers
+///                           (`Distortion_optimization::parameters::number_of_threads()`)}
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{`1`}
 ///     \cgalParamExtra{Used when the program links `CGAL::TBB_support`; the result and the messages
@@ -376,7 +380,7 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
 /// manifold complex: a facet in more than two, or two that meet only at an edge or a vertex (the
 /// message names them), two on the same side of their common facet (a folded mesh: they
 /// overlap; the message names them), or a complex without boundary (its cells overlap); for a negative number
-/// of threads.
+/// of threads. `c3t3` is then unchanged.
 template <class C3T3, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename C3T3::Triangulation::Vertex_handle>
 c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
@@ -419,9 +423,10 @@ c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
     }
   });
   internal::First_failure::throw_lowest(failures);
-  // The fold check and the construction of the complex (sequential: CGAL's containers) need only
-  // the adjacency: with threads they run beside the manifold checks' last part, whose failures are
-  // still told first (54K tetrahedra, 2 threads, a first call: about 41 ms instead of 47).
+  // The fold check (on the workers) and the construction of the complex (sequential: CGAL's
+  // containers) need only the adjacency: with threads they run beside the manifold checks' last
+  // part, whose failures are still told first (54K tetrahedra, 2 threads, a first call: about 41 ms
+  // instead of 47).
   std::vector<std::uint32_t> across;
   std::exception_ptr fold_error, build_error;
   C3T3 built;
@@ -444,7 +449,11 @@ c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
   });
   if(fold_error) std::rethrow_exception(fold_error);
   if(build_error) std::rethrow_exception(build_error);
-  c3t3.swap(built);   // (the old content goes with `built`)
+  // The complex's swap() exchanges the triangulations but not Mesh_3's cache of the facets around
+  // each edge (face_status()): clear() drops that cache, which would otherwise still describe the
+  // old complex, keyed by vertices that go with `built`.
+  c3t3.clear();
+  c3t3.swap(built);
   return handles;
 }
 
