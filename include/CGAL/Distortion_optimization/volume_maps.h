@@ -297,8 +297,8 @@ energy sum_c w(c) |J_c|^2 for the targets of the fixed ones, with the cell weigh
 `CGAL::minimize_distortion()` (by default proportional to the volumes: the volume-weighted
 cotangent Laplacian), solved by conjugate gradients with Jacobi's preconditioner to a relative
 residual of 1e-10 (on the threads of `number_of_threads`). The optimizer's harmonic start is the
-same solve. The result may invert cells where the
-boundary is not convex; `CGAL::compute_distortion()` tells.
+same solve. The result may invert cells where the boundary is not convex;
+`CGAL::compute_distortion()` tells.
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
 \tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`
