@@ -1,8 +1,10 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
 #ifndef CGAL_MINIMIZE_DISTORTION_H
 #define CGAL_MINIMIZE_DISTORTION_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // From a closed surface to an optimized volume map: mesh_interior() on real closed surfaces of
 // libcgal-demo and on generated ones (valid complexes, boundary on the surface, sharp corners

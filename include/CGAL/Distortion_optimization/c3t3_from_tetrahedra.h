@@ -1,8 +1,10 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_C3T3_FROM_TETRAHEDRA_H
 #define CGAL_DISTORTION_OPTIMIZATION_C3T3_FROM_TETRAHEDRA_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Start maps for surface parametrization, from CGAL's Surface_mesh_parameterization package, so
 // that "parameterize, then improve" is two calls:
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H
 #define CGAL_DISTORTION_OPTIMIZATION_INITIAL_MAPS_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>

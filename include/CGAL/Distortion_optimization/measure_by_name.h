@@ -1,10 +1,12 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Measures chosen by name at run time (command lines, configuration files).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MEASURE_BY_NAME_H
 #define CGAL_DISTORTION_OPTIMIZATION_MEASURE_BY_NAME_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Distortion measures of "Geometry-based distortion measures for space deformation"
 // (Naitsat, Saucan, Zeevi), section 2.1: each is a function D(sigma_1, ..., sigma_n) of the
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
 #define CGAL_DISTORTION_OPTIMIZATION_MEASURES_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/number_types.h>
 

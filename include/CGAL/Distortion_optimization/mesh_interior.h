@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The first step of the volume workflow: a tetrahedral mesh of the inside of a closed triangle
 // surface, made by CGAL's Mesh_3, ready for the start maps of volume_maps.h and for
@@ -23,6 +23,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MESH_INTERIOR_H
 #define CGAL_DISTORTION_OPTIMIZATION_MESH_INTERIOR_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/number_types.h>

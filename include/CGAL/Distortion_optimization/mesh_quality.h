@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Mesh quality from distortion: a mesh is a map from ideal cells (the regular simplex), so that
 // minimizing a measure of that map improves the mesh's element shapes with its connectivity kept
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_MESH_QUALITY_H
 #define CGAL_DISTORTION_OPTIMIZATION_MESH_QUALITY_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The numbers a measure computes with: the package's NaN and infinity, and the lanes through
 // which the kernel evaluates several cells at once. A measure's invariant form (measures.h) is
@@ -15,6 +15,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
 #define CGAL_DISTORTION_OPTIMIZATION_NUMBER_TYPES_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The package's own named parameters. CGAL 5.5 offers no hook to add chainable `.name()` members
 // to CGAL::Named_function_parameters, so each new name is a free function that takes an optional
@@ -10,6 +10,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_PARAMETERS_H
 #define CGAL_DISTORTION_OPTIMIZATION_PARAMETERS_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Named_function_parameters.h>
 

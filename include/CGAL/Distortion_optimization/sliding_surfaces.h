@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Surfaces on which boundary vertices slide (named parameter `sliding_boundary`): the paper's
 // Fig. 13 maps a cube onto a ball with the boundary kept on the sphere, not fixed where the start
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_SLIDING_SURFACES_H
 #define CGAL_DISTORTION_OPTIMIZATION_SLIDING_SURFACES_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>

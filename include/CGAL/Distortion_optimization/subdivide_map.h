@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Subdivision of a triangle map: the source mesh and its target map refined together with one
 // connectivity (Naitsat, Saucan and Zeevi, "Geometry-based distortion measures for space
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_SUBDIVIDE_MAP_H
 #define CGAL_DISTORTION_OPTIMIZATION_SUBDIVIDE_MAP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Tetrahedral meshes of closed triangle surfaces from TetGen 1.5 (Si, "TetGen, a Delaunay-based
 // quality tetrahedral mesh generator", 2015), through its library: link with -ltet (the CMake
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_TETRAHEDRALIZE_WITH_TETGEN_H
 #define CGAL_DISTORTION_OPTIMIZATION_TETRAHEDRALIZE_WITH_TETGEN_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Start maps for the tetrahedra of a Mesh_complex_3_in_triangulation_3: a user function, the
 // radial map x |x| of the paper's Table 1 and Fig. 5, a star-shaped domain onto the unit ball, and
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_VOLUME_MAPS_H
 #define CGAL_DISTORTION_OPTIMIZATION_VOLUME_MAPS_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>

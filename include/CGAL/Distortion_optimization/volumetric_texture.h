@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Volumetric textures (section 4.4 of the paper): a surface inside the source volume of a map of
 // tetrahedra is stored as the barycentric coordinates (eq. 18) of its vertices in the tetrahedra
@@ -15,6 +15,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_VOLUMETRIC_TEXTURE_H
 #define CGAL_DISTORTION_OPTIMIZATION_VOLUMETRIC_TEXTURE_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // A strict reader and an atomic writer of tetrahedral meshes in the ASCII Medit format (.mesh),
 // the format of CGAL::IO::output_to_medit(), TetGen, MMG and Gamma's libMeshb. Vertex and
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_MEDIT_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_MEDIT_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>

@@ -1,10 +1,12 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // What the package's readers return and its writers take: a mesh as it appears in a file.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_SIMPLEX_SOUP_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_SIMPLEX_SOUP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <array>
 #include <cstddef>

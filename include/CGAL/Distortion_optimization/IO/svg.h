@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Pictures where people look rather than read: a map's cells coloured by their distortion (a
 // planar or parametrized triangle mesh, or a planar cross-section of a tetrahedral mesh, as in the
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_SVG_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_SVG_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>

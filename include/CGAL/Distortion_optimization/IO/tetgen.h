@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // A strict reader of TetGen's .node/.ele pair (the files `tetgen` writes, and tetgenio's
 // save_nodes/save_elements), keeping the order of points and tetrahedra as in the files.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_TETGEN_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_TETGEN_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Strict readers and atomic writers of triangle meshes in OFF and OBJ (and PLY, STL and GOCAD
 // read through CGAL's readers, then checked as strictly), keeping vertex and face order exactly as
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_TRIANGLE_SOUP_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_TRIANGLE_SOUP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>

@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // A strict reader of vertex lists (one 0-based index per line), the format of the command-line
 // tool's --fix file: bounded lines, every line read, messages that name the file and line.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_VERTEX_LIST_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_VERTEX_LIST_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>

@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // An atomic writer of simplicial meshes with per-cell values (e.g. the distortion of each cell) as
 // ASCII VTK XML unstructured grids (.vtu), for ParaView and VisIt.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_VTU_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_VTU_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>

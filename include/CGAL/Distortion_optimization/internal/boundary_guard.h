@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Global injectivity with a free boundary (section 3.2, Fig. 7): a positively oriented simplicial
 // map is injective iff its boundary (segments in 2D, triangles in 3D) does not self-intersect
@@ -36,6 +36,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BOUNDARY_GUARD_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 #include <CGAL/Distortion_optimization/internal/svd.h>

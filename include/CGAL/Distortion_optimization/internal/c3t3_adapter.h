@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Translates the cells of a Mesh_complex_3_in_triangulation_3 (only those in the complex) and a
 // target map keyed by Vertex_handle into the flat arrays of Simplicial_map<3>, and writes the
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_C3T3_ADAPTER_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_C3T3_ADAPTER_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>

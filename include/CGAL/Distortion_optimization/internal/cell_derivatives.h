@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Derivatives of a cell's functions: the cofactor matrix (the derivative of the determinant),
 // and the chain rule from a cell's edge matrix Ds = (x_1 - x_0, ..., x_n - x_0) to its vertices.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DERIVATIVES_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DERIVATIVES_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <Eigen/Core>
 

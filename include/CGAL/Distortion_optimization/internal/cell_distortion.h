@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The per-cell kernel: D(J) and its exact derivative dD/dJ = U diag(dD/dsigma) V^T.
 // Measures that can be written with invariants of J (norms of J and of its cofactor matrix,
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_DISTORTION_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/number_types.h>

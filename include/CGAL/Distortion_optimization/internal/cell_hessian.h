@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // A cell's energy Hessian in its vertices, projected to be positive semi-definite: what the
 // global step's Newton direction is built from. For a measure D(s) of the singular values of
@@ -13,6 +13,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_HESSIAN_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_CELL_HESSIAN_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Algorithm 2 (GreedyGradDescent): every free vertex is optimized once per sweep, the one with the
 // largest omega(v) dist_w(f, v) first. In the paper's order (greedy_sweep) the keys live in an
@@ -8,6 +8,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GREEDY_SWEEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GREEDY_SWEEP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>

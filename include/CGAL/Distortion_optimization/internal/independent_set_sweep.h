@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Beyond the paper: a parallel sweep over independent sets. The free vertices are coloured
 // greedily so that no two vertices of one colour share a cell; a sweep visits the colours in turn
@@ -10,6 +10,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_INDEPENDENT_SET_SWEEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_INDEPENDENT_SET_SWEEP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/greedy_sweep.h>
 #include <CGAL/Distortion_optimization/internal/parallel.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The one Laplacian of the package: P = sum_c w(c) f(c) G_c^T G_c restricted to the free vertices,
 // with G_c the gradients of cell c's hat functions (cell_derivatives.h) and w(c) the problem's
@@ -12,6 +12,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
 #include <CGAL/Distortion_optimization/internal/parallel.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The local problem (26) for one vertex v: minimize the energy of its ring of cells over the
 // position y of v, never leaving the kernel of the ring.
@@ -16,6 +16,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LOCAL_STEP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Algorithm 1, the whole optimization in one place: the state (optimizer_state.h), the steps that
 // move it (local_step.h: one vertex; global_step.h: all free vertices, and the harmonic start),
@@ -12,6 +12,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MINIMIZE_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>

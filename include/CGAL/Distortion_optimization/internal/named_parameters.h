@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Everything the public functions read from a named-parameter pack, in one place: the options of
 // the optimization, and, through an adapter (triangle_mesh_adapter.h, c3t3_adapter.h), the vertex
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NAMED_PARAMETERS_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NAMED_PARAMETERS_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>

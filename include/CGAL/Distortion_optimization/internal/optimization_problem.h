@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Everything Algorithm 1 needs, built once from a Simplicial_map: vertex weights omega(v), the
 // cell weights w(c) = sum_{v in c} omega(v) w(c, v) (step 2), which vertices are free, and each
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZATION_PROBLEM_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZATION_PROBLEM_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>

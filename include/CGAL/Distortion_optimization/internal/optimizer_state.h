@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The state every step of the optimization works on, owned by minimize(): the target positions
 // (in the problem's map), each cell's distortion D(J_c), whether each cell still has its source's
@@ -10,6 +10,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZER_STATE_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_OPTIMIZER_STATE_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/boundary_guard.h>

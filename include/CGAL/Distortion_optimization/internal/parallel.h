@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The package's only contact with TBB. As elsewhere in CGAL, parallelism exists when the program
 // links CGAL::TBB_support (which defines CGAL_LINKED_WITH_TBB); without it every loop below runs
@@ -9,6 +9,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_PARALLEL_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_PARALLEL_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <algorithm>
 #include <cstddef>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Algorithm 3 (ParallelGradDescent): the cells are cut into k parts by a spatial partition (slabs
 // of equal cell counts along the longest axis of the map); the free vertices whose cells lie in
@@ -11,6 +11,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_PARTITIONED_SWEEP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_PARTITIONED_SWEEP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/greedy_sweep.h>
 #include <CGAL/Distortion_optimization/internal/parallel.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The bodies of the public functions that change a map, on any adapter (triangle_mesh_adapter.h,
 // c3t3_adapter.h): the problem from the named parameters, the run, and the free vertices' targets
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_RUN_ON_ADAPTER_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_RUN_ON_ADAPTER_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/internal/minimize.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // A simplicial map as flat arrays (section 2.2 of the paper): cells, the inverse of each source
 // cell's edge matrix (so that J = Ds * Dm^-1, eq. 20), rest volumes and target positions.
@@ -7,6 +7,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SIMPLICIAL_MAP_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>

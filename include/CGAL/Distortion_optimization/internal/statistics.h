@@ -1,10 +1,12 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Evaluation of a simplicial map: per-cell distortion and the weighted means of eq. 23-25.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_STATISTICS_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_STATISTICS_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/Distortion_statistics.h>
 #include <CGAL/Distortion_optimization/errors.h>

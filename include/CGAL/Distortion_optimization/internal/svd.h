@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Signed singular value decomposition of 2x2 and 3x3 Jacobians.
 //
@@ -9,6 +9,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SVD_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SVD_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/number_types.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>

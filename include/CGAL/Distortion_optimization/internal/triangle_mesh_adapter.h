@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Translates a triangle mesh (any FaceListGraph) with a source vertex point map (Point_2 or
 // Point_3) and a target map (Point_2) into the flat arrays of Simplicial_map<2>, and writes the
@@ -11,6 +11,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TRIANGLE_MESH_ADAPTER_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TRIANGLE_MESH_ADAPTER_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Tutte's embedding of a triangulated disk: the boundary on a circle, in order, spaced by the
 // source's edge lengths, and each inner vertex the mean of its neighbours (Tutte, "How to draw a
@@ -15,6 +15,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
 

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Untangling: from a start with inverted or flat cells to a map whose every cell has its source's
 // orientation, by the method of Garanzha, Kaporin, Kudryavtseva, Protais, Ray and Sokolov,
@@ -25,6 +25,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_UNTANGLE_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>

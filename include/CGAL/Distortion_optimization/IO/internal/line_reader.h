@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // What the strict readers share: a bounded line reader that drops comments and blank lines and
 // names the file and line in every error, a token reader on top of it for formats whose values
@@ -9,6 +9,8 @@
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_LINE_READER_H
 #define CGAL_DISTORTION_OPTIMIZATION_IO_INTERNAL_LINE_READER_H
+
+#include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
 
