@@ -8,6 +8,7 @@
 
 #include <CGAL/license/Distortion_optimization.h>
 
+#include <CGAL/Distortion_optimization/Any_measure.h>
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
 
@@ -299,6 +300,16 @@ decltype(auto) with_measure(const std::string& name, F&& f)
                         "*" + measure_names()[3]);
   }
   return measures_internal::visit_built_in(k, std::forward<F>(f));
+}
+
+/// \ingroup PkgDistortionOptimizationMeasures
+/// The measure named `name`, as `with_measure()` reads it, held by an `Any_measure`: the functions
+/// called with it are compiled once for all the names (where `with_measure()` compiles them once
+/// per kind of measure).
+/// \throws Invalid_input for an unknown name or a weight that is not positive and finite.
+inline Any_measure measure_from_name(const std::string& name)
+{
+  return with_measure(name, [](const auto& measure) { return Any_measure(measure); });
 }
 
 } // namespace Distortion_optimization

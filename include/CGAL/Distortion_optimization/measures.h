@@ -92,6 +92,26 @@ struct Has_hessian<Measure, n,
   std::void_t<decltype(std::declval<const Measure&>().template hessian<n>(std::declval<const Singular_values<n>&>()))>>
   : std::true_type {};
 
+// The base of a measure whose type hides the measure chosen (Any_measure.h): what other measures
+// declare by their members, it tells at run time.
+struct Erased_measure_tag {};
+template <class Measure>
+constexpr bool is_erased = std::is_base_of<Erased_measure_tag, Measure>::value;
+
+// Whether the measure has a Hessian in the singular values, and a Laplacian weight of its own.
+template <int n, class Measure>
+bool has_hessian(const Measure& m)
+{
+  if constexpr(is_erased<Measure>) return m.template has_hessian<n>();
+  else return Has_hessian<Measure, n>::value;
+}
+template <int n, class Measure>
+bool has_laplacian_weight(const Measure& m)
+{
+  if constexpr(is_erased<Measure>) return m.template has_laplacian_weight<n>();
+  else return Has_laplacian_weight<Measure, n>::value;
+}
+
 // The factor by which the global step's Laplacian weighs a cell (1 if the measure names none).
 template <int n, class Measure>
 double laplacian_weight(const Measure& m, const Singular_values<n>& s)

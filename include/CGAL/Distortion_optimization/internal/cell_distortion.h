@@ -13,15 +13,18 @@
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/number_types.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
+#include <CGAL/Distortion_optimization/internal/measure_kernel.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 #include <CGAL/Distortion_optimization/internal/svd.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Distortion_optimization {
@@ -109,7 +112,9 @@ double distortion_from_gram(const Measure& measure, const Matrix<3>& J, const Ma
 template <int n, class Measure>
 double jacobian_distortion(const Measure& measure, const Matrix<n>& J)
 {
-  if constexpr(Has_invariant_form<Measure, n>::value)
+  if constexpr(measures_internal::is_erased<Measure>)
+    return measure.template kernel<n>().jacobian_distortion(J, nullptr, nullptr);
+  else if constexpr(Has_invariant_form<Measure, n>::value)
     return distortion_from_invariants<n>(measure, J, nullptr);
   else if(!J.allFinite())
     return not_a_number;
@@ -122,6 +127,8 @@ double jacobian_distortion(const Measure& measure, const Matrix<n>& J)
 template <int n, class Measure>
 double jacobian_distortion(const Measure& measure, const Matrix<n>& J, Matrix<n>& dJ, Vector<n>* sigma = nullptr)
 {
+  if constexpr(measures_internal::is_erased<Measure>)
+    return measure.template kernel<n>().jacobian_distortion(J, &dJ, sigma);
   double value = not_a_number;
   if(J.allFinite()) {
     if constexpr(Has_invariant_form<Measure, n>::value) {
@@ -272,10 +279,17 @@ template <int n, class Measure, class CellAt>
 void cell_distortions(const Measure& measure, const Simplicial_map<n>& map, std::size_t count, const CellAt& cell_at,
                       double* values, std::array<Vector<n>, n + 1>* vertex_gradients = nullptr, Vector<n>* sigma = nullptr)
 {
-  if constexpr(Has_invariant_form<Measure, n>::value)
+  if constexpr(measures_internal::is_erased<Measure>) {
+    // The measure's own kernel, on the cells listed (one virtual call per batch).
+    static thread_local std::vector<std::uint32_t> cells;
+    cells.resize(count);
+    for(std::size_t k = 0; k < count; ++k) cells[k] = static_cast<std::uint32_t>(cell_at(k));
+    measure.template kernel<n>().cell_distortions(map, count, cells.data(), values, vertex_gradients, sigma);
+  } else if constexpr(Has_invariant_form<Measure, n>::value) {
     distortions_from_invariants<n>(measure, map, count, cell_at, values, vertex_gradients, sigma);
-  else
+  } else {
     distortions_from_singular_values<n>(measure, map, count, cell_at, values, vertex_gradients, sigma);
+  }
 }
 
 } // namespace internal

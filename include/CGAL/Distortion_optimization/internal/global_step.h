@@ -38,6 +38,7 @@
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cell_hessian.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
+#include <CGAL/Distortion_optimization/internal/newton_model.h>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
@@ -48,6 +49,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -124,34 +126,6 @@ struct Block_AMD_ordering
   }
 };
 
-// The measure whose projected Newton steps a measure takes: its own where it has a Hessian. The
-// dilatations K, the condition number and C are maxima, not smooth where the singular values they
-// compare cross (at their minimum above all), where the Laplacian's steps crawl (a 6K-tetrahedron
-// cube with nothing fixed: K 1.0003 after 100 iterations). On a tetrahedral mesh where no vertex
-// is fixed they take the steps of a smooth model, in the spirit of the proxies of SLIM
-// (Rabinovich et al. 2017): MIPS for K and the condition number, symmetric Dirichlet for C; the
-// line search decides on the measure itself. With nothing fixed the model has the same
-// minimizers (the source's similarities, its rigid motions). With a boundary sliding on a surface
-// they differ: the model's Hessian is then only the metric of the measure's own gradient, a
-// proxy as SLIM's reweighted Laplacian is, so that each step descends on the measure, and the
-// steps alternate with sweeps (minimize.h). The ball map of blobby's 44K tetrahedra: K 1.5895
-// after 19 iterations (3.3 s), against 1.5917 after 35 (4.0 s) with the model's own steps and
-// 1.6104 after 100 with the Laplacian's; C 1.4026 after 52, against 1.4067 after 43 and 1.4130
-// after 89. The gyroid's 51K-tetrahedron cube, C: 1.37647 in 1.86 s, where the model's own steps
-// ended at 1.37651 in 2.73 s (a Hessian each step). A proxy's steps are held short by the
-// measure's kinks (the accepted length falls to a few hundredths), not by its metric: the
-// Hessian, two thirds of a step's cost, is assembled every third step only, and each step starts
-// from twice the last accepted length, as the Laplacian's. Whole runs, one thread, interleaved:
-// the gyroid's cube ends at C 1.37593 in 2.2-2.3 s against 1.37595 in 2.9-3.4 s; blobby's ball
-// map at K 1.5898 in 2.4-2.6 s against 1.5895 in 3.2-3.4 s, C 1.4022 in 5.4-5.5 s against
-// 1.4026 in 6.6-7.7 s. With fixed vertices the model's steps do not lead (the Table 1 cube: they
-// were cut short and the run took twice as long), and on a surface's parametrization no map has
-// K = 1.
-template <class Measure> struct Newton_model { using type = Measure; };
-template <> struct Newton_model<Conformal_dilatation> { using type = MIPS; };
-template <> struct Newton_model<Condition_number> { using type = MIPS; };
-template <> struct Newton_model<Isometric_dilatation> { using type = Symmetric_dirichlet; };
-
 // An attempt that may fail, retried less often after failures: after k in a row, the next
 // 2^(k-1) occasions (at most 2^16) skip it.
 struct Backoff
@@ -181,13 +155,14 @@ public:
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()),
       previous_solution_(Eigen::MatrixXd::Zero(system_.size(), n)),
       slides_(std::any_of(p_.is_sliding.begin(), p_.is_sliding.end(), [](unsigned char s) { return s != 0; })),
-      newton_(newton && measures_internal::Has_hessian<Model, n>::value && (is_own_model || every_vertex_moves())),
-      proxy_(newton_ && !is_own_model && slides_) {}
+      model_(Newton_model<Measure>::of(state.measure())),
+      newton_(newton && measures_internal::has_hessian<n>(model()) && (!model_ || every_vertex_moves())),
+      proxy_(newton_ && model_ && slides_) {}
 
   // Whether the steps solve Newton's system (else the reweighted Laplacian's), and whether it is a
   // smooth model's rather than the measure's.
   bool is_newton() const { return newton_; }
-  bool takes_model_steps() const { return newton_ && !is_own_model; }
+  bool takes_model_steps() const { return newton_ && model_; }
   // Whether those are a model's whose minimizers are not the measure's (some vertex slides): its
   // Hessian is then the metric of the measure's gradient.
   bool model_misses_minimizers() const { return proxy_; }
@@ -225,12 +200,12 @@ public:
     if(system_.size() == 0) return false;
     blocked_ = newton_;
     // Where a model's step finds no decrease, the next 1, 2, 4, ... steps are the Laplacian's.
-    const bool newton = newton_ && (is_own_model || model_steps_.tries());
+    const bool newton = newton_ && (!model_ || model_steps_.tries());
     if(newton && step_along(true)) {
       model_steps_.succeeded();
       return true;
     }
-    if(newton && !is_own_model) {
+    if(newton && model_) {
       model_steps_.failed();
       metric_steps_ = 0;
     }
@@ -249,7 +224,6 @@ public:
 private:
   using Measure = std::decay_t<decltype(std::declval<const State&>().measure())>;
   using Model = typename Newton_model<Measure>::type;
-  static constexpr bool is_own_model = std::is_same<Model, Measure>::value;
   // Whether no vertex is fixed (some may slide), on a tetrahedral mesh.
   bool every_vertex_moves() const
   {
@@ -258,10 +232,11 @@ private:
       if(!p_.is_free[v]) return false;
     return true;
   }
+  // The measure whose Newton steps are taken: a smooth model's (model_), or the measure's own.
   const Model& model() const
   {
-    if constexpr(is_own_model) return state_.measure();
-    else return model_;
+    if constexpr(std::is_same<Model, Measure>::value) return model_ ? *model_ : state_.measure();
+    else return *model_;
   }
   using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_AMD_ordering<n>>;
 
@@ -330,7 +305,7 @@ private:
     // A model's slope is not the measure's: then any decrease is taken, within 8 trials (a
     // model's step shorter than that is not worth the trials: the Laplacian's follows). A
     // proxy's step has the measure's slope.
-    const bool model = newton && !is_own_model && !proxy_;
+    const bool model = newton && model_ && !proxy_;
     const bool moved = line_search(direction, t, model ? 0. : slope, slope_of, natural ? 1. : 0., model ? 8 : 30);
     if(moved) last = t;
     if(newton) blocked_ = !(moved && t >= 1);
@@ -358,7 +333,7 @@ private:
       };
       // A proxy's metric changes slowly from step to step, and the measure's kinks, not the
       // metric, hold its steps short: its assembly (two thirds of a step) is renewed every
-      // proxy_metric_steps steps, and after a failed one (see the figures at Newton_model).
+      // proxy_metric_steps steps, and after a failed one (newton_model.h).
       if(proxy_ && metric_steps_ > 0 && metric_steps_ < proxy_metric_steps) {
         ++metric_steps_;
         system_.refill_gradient(measure_gradients, g);
@@ -524,14 +499,14 @@ private:
   // For the Laplacian's refill: each cell's energy gradient and its measure's laplacian_weight.
   void cell_terms(const std::uint32_t* cells, std::size_t count, double* factor, std::array<Vec, n + 1>* gradient) const
   {
-    constexpr bool reweighted = measures_internal::Has_laplacian_weight<Measure, n>::value;
+    const bool reweighted = measures_internal::has_laplacian_weight<n>(state_.measure());
     static thread_local std::vector<double> value;
     static thread_local std::vector<Vec> sigma;
     value.resize(count);
     sigma.resize(reweighted ? count : 0);
     cell_distortions<n>(state_.measure(), p_.map, count, [&](std::size_t i) { return cells[i]; }, value.data(), gradient,
                         reweighted ? sigma.data() : nullptr);
-    if constexpr(reweighted)
+    if(reweighted)
       for(std::size_t i = 0; i < count; ++i) factor[i] = measures_internal::laplacian_weight<n>(state_.measure(), sigma[i]);
   }
 
@@ -629,6 +604,7 @@ private:
   Eigen::MatrixXd previous_solution_;
   double last_t_ = 0, last_newton_t_ = 0;   // the last accepted step of each direction
   bool slides_;   // whether some vertex slides on a surface
+  std::optional<Model> model_;   // the smooth model whose Newton steps the measure takes; empty: its own
   bool newton_, proxy_, blocked_ = false;   // proxy_: the model's Hessian, the measure's gradient
   // The steps a proxy's assembled Hessian served (0: none to serve), and how many it serves.
   int metric_steps_ = 0;
@@ -637,8 +613,6 @@ private:
   // (see solve_newton_system).
   static constexpr int newton_iterations = 60;
   int jacobi_iterations_ = newton_iterations;
-  struct No_model {};
-  std::conditional_t<is_own_model, No_model, Model> model_;
   std::unique_ptr<Factorization> factorization_;
   std::unique_ptr<typename Laplacian_system<n>::Coordinatewise_laplacian> laplacian_preconditioner_;
   // The lagged factorization's solves, a model's steps, a measure's own Laplacian steps.
