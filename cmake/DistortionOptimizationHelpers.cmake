@@ -3,6 +3,7 @@
 #   distortion_add_test(NAME src... [LIBRARIES lib...])
 #   distortion_add_example(NAME src... [LIBRARIES lib...])
 #   distortion_add_benchmark(NAME src... [LIBRARIES lib...])
+#   distortion_add_tool(NAME src... [LIBRARIES lib...])
 #
 # Each creates the executable target NAME linking CGAL::Distortion_optimization (plus
 # CGAL::TBB_support and the define DISTORTION_OPTIMIZATION_HAS_TBB when TBB was found), with
@@ -12,6 +13,7 @@
 #   tests       <build>/test/Distortion_optimization/NAME
 #   examples    <build>/examples/Distortion_optimization/NAME
 #   benchmarks  <build>/benchmark/Distortion_optimization/NAME
+#   tools       <build>/bin/NAME
 
 include_guard(GLOBAL)
 
@@ -31,35 +33,34 @@ function(_distortion_setup_target name output_subdir)
     RUNTIME_OUTPUT_DIRECTORY "${PROJECT_BINARY_DIR}/${output_subdir}$<0:>")
 endfunction()
 
-function(distortion_add_test name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "LIBRARIES")
+# The body of the functions below: the executable NAME from the sources, set up for `subdir`.
+function(_distortion_add_executable name subdir)
+  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "" "LIBRARIES")
   if(NOT ARG_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "distortion_add_test(${name}): no source files")
+    message(FATAL_ERROR "${name}: no source files")
   endif()
   add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
-  _distortion_setup_target(${name} test/Distortion_optimization)
-  target_link_libraries(${name} PRIVATE GTest::gtest_main ${ARG_LIBRARIES})
+  _distortion_setup_target(${name} ${subdir})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES})
+endfunction()
+
+function(distortion_add_test name)
+  _distortion_add_executable(${name} test/Distortion_optimization ${ARGN})
+  target_link_libraries(${name} PRIVATE GTest::gtest_main)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY "${PROJECT_BINARY_DIR}/test/Distortion_optimization"
     DISCOVERY_TIMEOUT 60)
 endfunction()
 
 function(distortion_add_example name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "LIBRARIES")
-  if(NOT ARG_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "distortion_add_example(${name}): no source files")
-  endif()
-  add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
-  _distortion_setup_target(${name} examples/Distortion_optimization)
-  target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES})
+  _distortion_add_executable(${name} examples/Distortion_optimization ${ARGN})
 endfunction()
 
 function(distortion_add_benchmark name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "LIBRARIES")
-  if(NOT ARG_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "distortion_add_benchmark(${name}): no source files")
-  endif()
-  add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
-  _distortion_setup_target(${name} benchmark/Distortion_optimization)
-  target_link_libraries(${name} PRIVATE benchmark::benchmark ${ARG_LIBRARIES})
+  _distortion_add_executable(${name} benchmark/Distortion_optimization ${ARGN})
+  target_link_libraries(${name} PRIVATE benchmark::benchmark)
+endfunction()
+
+function(distortion_add_tool name)
+  _distortion_add_executable(${name} bin ${ARGN})
 endfunction()

@@ -19,7 +19,8 @@ if [ "${1:-}" != "--no-build" ]; then
   cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DBUILD_EXAMPLES=ON
   cmake --build "$BUILD" --target distortion_optimizer untangle_parameterization -j2
 fi
-BIN=$BUILD/examples/Distortion_optimization
+BIN=$BUILD/bin
+EXAMPLES=$BUILD/examples/Distortion_optimization
 DATA=$BUILD/data
 OUT=$BUILD/demo
 mkdir -p "$OUT"
@@ -48,7 +49,7 @@ run "lion-head SD, border free (Tutte start)" "$OUT/lion-head_free.json" --sourc
   --output "$OUT/lion-head_free.obj" --measure symmetric_dirichlet --fix none --svg "$OUT/lion-head_free.svg"
 
 echo "== 3. lion-head: CGAL's ARAP parameterization, untangled, then symmetric Dirichlet (border free)"
-"$BIN/untangle_parameterization" "$DATA/lion-head.off" "$OUT/lion-head"
+"$EXAMPLES/untangle_parameterization" "$DATA/lion-head.off" "$OUT/lion-head"
 
 echo "== 4. the paper's Table 1: a cube of 48000 tetrahedra, radial start x|x|, K, boundary fixed"
 awk -v k=20 -f scripts/demo_cube.awk > "$OUT/cube.mesh"

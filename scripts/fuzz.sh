@@ -63,12 +63,12 @@ for reader in "${targets[@]}"; do
   source_file=test/Distortion_optimization/fuzz/fuzz_reader.cpp
   case "$reader" in
     read_vertex_list) source_file=test/Distortion_optimization/fuzz/fuzz_vertex_list.cpp ;;
-    command_line) source_file=test/Distortion_optimization/fuzz/fuzz_command_line.cpp ;;
+    command_line) source_file="tools/distortion_optimizer/test/fuzz_command_line.cpp tools/distortion_optimizer/command_line.cpp" ;;
   esac
   echo "fuzz.sh: building $reader"
   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
     -DFUZZ_READER="$reader" -Iinclude -I/usr/include/eigen3 \
-    "$source_file" -o "$dir/fuzz_$reader"
+    $source_file -o "$dir/fuzz_$reader"
   echo "fuzz.sh: running $reader for $seconds s"
   # The command-line target stat()s the paths it makes up: run it where they name nothing of ours.
   if ! (cd "$dir" && "./fuzz_$reader" -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \

@@ -3,7 +3,7 @@
 # value of a report written by --report.
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-TOOL=$ROOT/build/examples/Distortion_optimization/distortion_optimizer
+TOOL=$ROOT/build/bin/distortion_optimizer
 [ -x "$TOOL" ] || { echo "build the tool first (bash scripts/test.sh)" >&2; exit 1; }
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT

@@ -3,7 +3,7 @@
 // exception, a crash, a hang or a sanitizer report is a bug. Run in a folder of its own: the
 // parser only stat()s the paths it is given, it never opens or writes them.
 
-#include "../../../examples/Distortion_optimization/command_line.h"
+#include "../command_line.h"
 
 #include <cstddef>
 #include <cstdint>
