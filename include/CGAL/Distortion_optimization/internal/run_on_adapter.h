@@ -29,7 +29,7 @@ Result minimize_adapted(Adapter& adapter, TargetMap target, const Measure& measu
   Optimization_problem<Adapter::dimension> problem = make_problem(adapter, np);
   check_size_is_held(problem, measure);
   const Options options = read_options(np);
-  Untangle_report untangled;
+  Untangle_result untangled;
   if(options.untangle_first) {
     Options untangle_options = options;
     untangle_options.iterations = default_untangle_rounds;
@@ -68,14 +68,8 @@ Untangle_result untangle_adapted(Adapter& adapter, TargetMap target, const Named
   Options options = read_options(np);
   options.iterations = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, CGAL::internal_np::number_of_iterations), default_untangle_rounds);
-  const Untangle_report report = untangle(problem, adapter.traits, options);
+  const Untangle_result result = untangle(problem, adapter.traits, options);
   adapter.write_targets(target, problem.map.target, problem.is_free);
-  Untangle_result result;
-  result.inverted_before = report.inverted_before;
-  result.inverted_after = report.inverted_after;
-  result.iterations = report.iterations;
-  result.seconds = report.seconds;
-  result.stopped_by_visitor = report.stopped_by_visitor;
   return result;
 }
 

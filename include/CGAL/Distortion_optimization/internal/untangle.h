@@ -28,6 +28,7 @@
 
 #include <CGAL/license/Distortion_optimization.h>
 
+#include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
 #include <CGAL/Distortion_optimization/internal/minimize.h>
@@ -44,13 +45,6 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
-
-struct Untangle_report
-{
-  std::size_t inverted_before = 0, inverted_after = 0, iterations = 0;
-  double seconds = 0;
-  bool stopped_by_visitor = false;
-};
 
 // The rounds untangle() and minimize_distortion(untangle_first) run at most by default.
 constexpr std::size_t default_untangle_rounds = 1000;
@@ -254,7 +248,7 @@ void check_tangled_cells_can_move(const Optimization_problem<n>& problem, const 
 // the map unchanged, when some inverted cell has only constrained vertices, or when the rounds end
 // with inverted cells (no injective map may exist with these constraints).
 template <int n, class GeomTraits>
-Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const GeomTraits& traits, Options options,
+Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const GeomTraits& traits, Options options,
                                     bool throw_on_failure = true)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -265,7 +259,7 @@ Untangle_report untangle_everywhere(Optimization_problem<n>& problem, const Geom
                           [](std::size_t a, std::size_t b) { return a + b; });
   };
   const auto tangled = [&] { return number_of_tangled_cells(problem.map, traits, workers); };
-  Untangle_report report;
+  Untangle_result report;
   report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
   if(throw_on_failure) check_tangled_cells_can_move(problem, traits);
@@ -413,7 +407,7 @@ inline Options recording_rounds(const Options& options, std::size_t& rounds)
 // map of the last. A part's untangled map is less even than the whole's: on the exuded 26K cube
 // of gyroid_texture, C then takes 39 iterations instead of 29 (1.33 s in all against 1.25 s).
 template <int n, class GeomTraits>
-Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+Untangle_result untangle_in_parts(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto inverted_vertices = [&](std::vector<unsigned char>& region) {
@@ -427,7 +421,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
     return inverted;
   };
   std::vector<unsigned char> region;
-  Untangle_report report;
+  Untangle_result report;
   report.inverted_before = report.inverted_after = inverted_vertices(region);
   if(report.inverted_before == 0 || 20 * report.inverted_before > problem.map.number_of_cells())
     return untangle_everywhere(problem, traits, options);
@@ -449,7 +443,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
     std::vector<std::uint32_t> global;
     Optimization_problem<n> part = part_of(problem, region, global);
     if(2 * part.map.number_of_cells() > problem.map.number_of_cells()) break;   // hardly smaller than the map
-    const Untangle_report r = untangle_everywhere(part, traits, continuing(options, report.iterations), false);
+    const Untangle_result r = untangle_everywhere(part, traits, continuing(options, report.iterations), false);
     const bool kept = rings > 0 || r.inverted_after == 0 || r.stopped_by_visitor;
     if(kept)
       for(std::size_t i = 0; i < global.size(); ++i) problem.map.target[global[i]] = part.map.target[i];
@@ -460,7 +454,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
   }
   if(report.inverted_after > 0 && !report.stopped_by_visitor) {
     try {
-      const Untangle_report r = untangle_everywhere(problem, traits, continuing(options, report.iterations));
+      const Untangle_result r = untangle_everywhere(problem, traits, continuing(options, report.iterations));
       report.iterations += r.iterations;
       report.inverted_after = r.inverted_after;
       report.stopped_by_visitor = r.stopped_by_visitor;
@@ -480,7 +474,7 @@ Untangle_report untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
 // cells squeezed there stay inverted with the guard and open without it, the boundary uncrossed.
 // Only when the boundary then crosses does the guarded run start again from the start map.
 template <int n, class GeomTraits>
-Untangle_report untangle_from_start(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+Untangle_result untangle_from_start(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);   // throws if the start crosses
   if(!guard) return untangle_in_parts(problem, traits, options);
@@ -496,7 +490,7 @@ Untangle_report untangle_from_start(Optimization_problem<n>& problem, const Geom
   // The rounds reported so far, also when the attempt throws: the guarded run numbers after them.
   std::size_t rounds = 0;
   unguarded = recording_rounds(unguarded, rounds);
-  Untangle_report report;
+  Untangle_result report;
   try {
     report = untangle_in_parts(problem, traits, unguarded);
     if((report.inverted_after == 0 || report.stopped_by_visitor) && guard->is_injective(problem.map.target)) return report;
@@ -522,7 +516,7 @@ Untangle_report untangle_from_start(Optimization_problem<n>& problem, const Geom
 // tangled triangle map with a closed piece, or with the boundary guard a piece with handles and a
 // free border (planar_obstruction()).
 template <int n, class GeomTraits>
-Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
+Untangle_result untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   const auto start = std::chrono::steady_clock::now();
   if constexpr(n == 2) {
@@ -546,7 +540,7 @@ Untangle_report untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     const std::size_t inverted_before = number_of_tangled_cells(problem.map, traits, Workers(options.threads));
     const std::vector<Vector<n>> start_targets = problem.map.target;
     problem.map.target = tutte;
-    Untangle_report report;
+    Untangle_result report;
     try {
       report = untangle_everywhere(problem, traits, continuing(options, rounds));
     } catch(const Invalid_input&) {
