@@ -421,7 +421,7 @@ TEST(TetrahedralMeshes, ProxyNewtonStepsLeadWithTheBoundarySliding)
                                              DO::parameters::sliding_boundary(DO::Sphere_surface(),
                                                DO::parameters::schedule(DO::Schedule::ALTERNATING, np)));
     EXPECT_EQ(inverted(c3t3, maps[k]), 0u) << k;
-    EXPECT_NEAR(r[k].final_energy, CGAL::compute_distortion(c3t3, Target_map(maps[k]), DO::Conformal_dilatation()).mean_average_volume,
+    EXPECT_NEAR(r[k].final_energy, CGAL::compute_distortion(c3t3, Target_map(maps[k]), DO::Conformal_dilatation()).mean_volume,
                 1e-12) << k;
   }
   EXPECT_LT(r[1].final_energy, r[0].final_energy);
@@ -446,7 +446,7 @@ TEST(TetrahedralMeshes, DilatationsTakeTheNewtonStepsOfASmoothModelWithNothingFi
     const DO::Result r = CGAL::minimize_distortion(c3t3, Target_map(map), measure,
       DO::parameters::global_solver(solver).vertex_is_constrained_map(nothing_fixed).number_of_iterations(30));
     EXPECT_EQ(inverted(c3t3, map), 0u) << measure.name();
-    EXPECT_NEAR(r.final_energy, CGAL::compute_distortion(c3t3, Target_map(map), measure).mean_average_volume, 1e-12) << measure.name();
+    EXPECT_NEAR(r.final_energy, CGAL::compute_distortion(c3t3, Target_map(map), measure).mean_volume, 1e-12) << measure.name();
     return r.final_energy;
   };
   const auto check = [&](const auto& measure) {

@@ -203,9 +203,7 @@ int run_triangles(const Command_line& c)
     DO::IO::write_triangle_soup(c.subdivided_source, refined);
     // The refined map's energy under --cell-weighting; its new vertices have no weights of their
     // own, so every vertex weighs 1 here.
-    const double refined_energy = c.cell_weighting == "uniform" ? refined_distortion.mean_uniform
-                                : c.cell_weighting == "volume" ? refined_distortion.mean_volume
-                                                               : refined_distortion.mean_average_volume;
+    const double refined_energy = c.cell_weighting == "uniform" ? refined_distortion.mean_uniform : refined_distortion.mean_volume;
     fields.insert(fields.end(), {{"subdivided_cells", std::to_string(mesh.number_of_faces())},
                                  {"subdivided_vertices", std::to_string(mesh.number_of_vertices())},
                                  {"subdivided_energy", json_number(refined_energy)},

@@ -16,13 +16,12 @@ namespace Distortion_optimization {
 /// w(c) = sum_{v in c} omega(v) w(c, v) (eq. 23 and Algorithm 1, step 2), the energy is
 /// E = sum_c w(c) D(J_c) (eq. 25) and the mean is E / sum_c w(c).
 /// Volume and average-volume weights differ by the constant factor n + 1, so their means are equal
-/// and only their energies differ. A normalized measure is +infinity on an inverted cell, and so
+/// (`mean_volume` is both) and only their energies differ. A normalized measure is +infinity on an inverted cell, and so
 /// are then the means and energies.
 struct Distortion_statistics
 {
   double mean_uniform = 0;          ///< w(c, v) = 1
-  double mean_volume = 0;           ///< w(c, v) = volume(c): the volume-weighted mean
-  double mean_average_volume = 0;   ///< w(c, v) = volume(c) / |c|
+  double mean_volume = 0;           ///< w(c, v) = volume(c) or volume(c) / |c|: the volume-weighted mean
   double energy_uniform = 0;        ///< eq. 25 with uniform weights
   double energy_volume = 0;         ///< eq. 25 with volume weights
   double energy_average_volume = 0; ///< eq. 25 with average-volume weights

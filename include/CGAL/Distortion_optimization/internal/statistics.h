@@ -65,8 +65,8 @@ Distortion_statistics evaluate(const Simplicial_map<n>& map, const Measure& meas
   }
   s.energy_average_volume = s.energy_volume / (n + 1);
   s.mean_uniform = s.energy_uniform / sum_uniform;
-  s.mean_volume = s.mean_average_volume = s.energy_volume / sum_volume;
-  if(s.cells == 0) s.min = s.max = s.mean_uniform = s.mean_volume = s.mean_average_volume = 0;
+  s.mean_volume = s.energy_volume / sum_volume;
+  if(s.cells == 0) s.min = s.max = s.mean_uniform = s.mean_volume = 0;
   return s;
 }
 
