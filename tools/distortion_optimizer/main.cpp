@@ -24,9 +24,8 @@
 // Energies are volume-weighted means sum vol(c) D(J_c) / sum vol(c).
 // Exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command line.
 
+#include "staged_output.h"
 #include "tool.h"
-
-#include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 
 #include <iostream>
 #include <memory>
@@ -51,11 +50,11 @@ int run(const Command_line& c)
   const std::vector<std::string Command_line::*> outputs = {&Command_line::output, &Command_line::mesh_output,
     &Command_line::carry_output, &Command_line::subdivided_source, &Command_line::flat_output, &Command_line::svg, &Command_line::energy_plot,
     &Command_line::report};
-  std::vector<std::unique_ptr<DO::IO::Temporary_file>> files(outputs.size());
+  std::vector<std::unique_ptr<Temporary_file>> files(outputs.size());
   Command_line staged = c;
   for(std::size_t i = 0; i < outputs.size(); ++i)
     if(!(c.*outputs[i]).empty()) {
-      files[i] = std::make_unique<DO::IO::Temporary_file>(c.*outputs[i], suffix(c.*outputs[i]));
+      files[i] = std::make_unique<Temporary_file>(c.*outputs[i], suffix(c.*outputs[i]));
       staged.*outputs[i] = files[i]->path();
     }
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
@@ -87,7 +86,7 @@ int run(const Command_line& c)
 int main(int argc, char** argv)
 {
   using namespace distortion_optimizer;
-  DO::IO::remove_temporary_files_on_signals();
+  remove_temporary_files_on_signals();
   try {
     return run(parse(argc, argv));
   } catch(const Usage_error& e) {

@@ -1,0 +1,52 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The tool's outputs, all or none (POSIX): each output is first a unique temporary file beside it
+// (never a name a user's file may have), renamed over it only once every output was written, and
+// removed on every failure, also when the program is interrupted (remove_temporary_files_on_signals).
+
+#ifndef DISTORTION_OPTIMIZER_STAGED_OUTPUT_H
+#define DISTORTION_OPTIMIZER_STAGED_OUTPUT_H
+
+#include <string>
+
+namespace distortion_optimizer {
+
+// A new, empty file with a unique name beside `path` (in its folder, hidden, ending in `suffix`),
+// removed when this object is destroyed unless it was renamed; while it exists it is also removed
+// if the program is interrupted after remove_temporary_files_on_signals(). Where `path` is a
+// symbolic link, the file it names is replaced and the link kept; where it is a device or a pipe
+// (/dev/null, /dev/stdout), the temporary file is made in the temporary folder (TMPDIR, else /tmp)
+// and its bytes are written into `path` at the end, which is never replaced.
+class Temporary_file
+{
+public:
+  // Throws Invalid_input if the folder of `path` does not exist or is not writable, if `path` is
+  // a folder, or a symbolic link to nothing.
+  explicit Temporary_file(const std::string& path, const std::string& suffix = "");
+  Temporary_file(const Temporary_file&) = delete;
+  Temporary_file& operator=(const Temporary_file&) = delete;
+  ~Temporary_file();
+
+  const std::string& path() const { return path_; }
+  // Whether the bytes go into a device or a pipe at rename_to() (a write that may fail, such as
+  // /dev/full) rather than by renaming the file.
+  bool is_streamed() const { return streamed_; }
+  // Renames the file to `target` (the file a symbolic link names; into a device or a pipe, its
+  // bytes are written), after which it is no longer temporary. Throws Invalid_input if the rename
+  // or the write fails (the temporary file is then removed).
+  void rename_to(const std::string& target);
+
+private:
+  std::string path_;
+  int slot_ = -1;
+  bool kept_ = false, streamed_ = false;
+};
+
+// Installs handlers of SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove the temporary files being
+// written and then end the program as the signal would have.
+void remove_temporary_files_on_signals();
+
+} // namespace distortion_optimizer
+
+#endif // DISTORTION_OPTIMIZER_STAGED_OUTPUT_H
