@@ -52,16 +52,16 @@ struct First_failure
 // at an edge or a vertex (a complex whose boundary is not a surface). Around each edge and each
 // vertex, the tetrahedra must be connected through facets containing it; the message names the cells.
 //
-// Everything is found vertex by vertex in the vertices' stars (flat arrays, no tree of keys: at 1M
-// tetrahedra a map-based check took seconds), in ranges of vertices shared among the threads. A
-// facet or a tetrahedron is met at its smallest vertex, where the tetrahedra sharing it are
-// paired: the pairings are the complex's adjacency, `across[4t + j]` = 4t' + j' for the facet
-// opposite tetrahedra[t][j], which is the facet opposite tetrahedra[t'][j'], or `no_tetrahedron`
-// on the boundary. Connectivity is then a walk on that adjacency: around an edge, each cell has
-// two facets through it, so its cells form one path or cycle iff a walk from one reaches them
-// all; around a vertex, a search through the three facets through it of each cell (54K cells:
-// 26 ms on one thread, where a union-find over every incidence took 30). Failures are reported as
-// a sequential pass finds them: the lowest vertex's, facets before edges before vertices.
+// Everything is found vertex by vertex in the vertices' stars (flat arrays, no tree of keys: a
+// map-based check is far slower on large meshes), in ranges of vertices shared among the threads. A
+// facet or a tetrahedron is met at its smallest vertex, where the tetrahedra sharing it are paired:
+// the pairings are the complex's adjacency, `across[4t + j]` = 4t' + j' for the facet opposite
+// tetrahedra[t][j], which is the facet opposite tetrahedra[t'][j'], or `no_tetrahedron` on the
+// boundary. Connectivity is then a walk on that adjacency: around an edge, each cell has two facets
+// through it, so its cells form one path or cycle iff a walk from one reaches them all; around a
+// vertex, a search through the three facets through it of each cell (faster than a union-find over
+// every incidence). Failures are reported as a sequential pass finds them: the lowest vertex's,
+// facets before edges before vertices.
 //
 // `alongside`, if given, runs once the adjacency is complete: with threads, beside the edge and
 // vertex checks (sequential work that needs only the adjacency, such as building a triangulation,
@@ -288,7 +288,7 @@ inline void check_cells_do_not_fold(const std::vector<std::array<std::size_t, 4>
 
 // Builds `tr` from positively oriented tetrahedra and their adjacency (check_manifold_tetrahedra()),
 // the way CGAL's build_triangulation() does (tet_soup_to_c3t3.h), but from the adjacency already
-// found rather than from a hash map of facets, which took most of the time (69K tetrahedra: 0.12 s).
+// found rather than from a hash map of facets, which took most of its time.
 // Each boundary facet gets an infinite cell, and those meet across the boundary's edges. A point
 // in no tetrahedron gets no vertex: its handle is Vertex_handle(). With threads it runs beside the
 // edge and vertex checks, on input they may still refuse (an edge or vertex pinched): it must then
@@ -427,8 +427,7 @@ c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
   internal::First_failure::throw_lowest(failures);
   // The fold check (on the workers) and the construction of the complex (sequential: CGAL's
   // containers) need only the adjacency: with threads they run beside the manifold checks' last
-  // part, whose failures are still told first (54K tetrahedra, 2 threads, a first call: about 41 ms
-  // instead of 47).
+  // part, whose failures are still told first; the overlap shortens the call.
   std::vector<std::uint32_t> across;
   std::exception_ptr error;   // the fold check's, or else the construction's
   C3T3 built;

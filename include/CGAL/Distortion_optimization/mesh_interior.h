@@ -135,8 +135,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(exude_slivers_t, exude_slivers)
 /// ask for (volume / (0.2 cell_size^3) / 5.5 + area / (0.3 facet_size^2) / 2, see
 /// `mesh_interior()`), which stops the runs where details of the surface far below the sizes (e.g.
 /// a sharp edge shorter than 10^-4 of the model) would force a huge mesh. Mesh_3 checks it while
-/// refining, not while protecting the sharp edges: on mpi_triang.off the error comes after about
-/// 60 s (a full run took 440 s and 7.10^5 tetrahedra).
+/// refining, not while protecting the sharp edges, so the error may come only after a long
+/// protection phase.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(maximum_number_of_vertices_t, maximum_number_of_vertices)
 
 
@@ -249,7 +249,7 @@ facet distance deeper (blobby.off: 35 of 2.7.10^4 cells). Inside, Mesh_3 leaves 
 flat with all four vertices on the surface across thin parts (spool.off: one, with a dihedral
 angle of 0.04 degrees, which the radial map turned over): without `exude_slivers`, Mesh_3's
 sliver exudation still runs on the cells with a dihedral angle below 2 degrees (a few
-milliseconds: 3 to 30 on spool.off and blobby.off). Where four of Mesh_3's points are coplanar
+milliseconds). Where four of Mesh_3's points are coplanar
 and cospherical, a cell can be flat to rounding (the square sections of a 40 x 0.1 x 0.1 bar: 15
 of 1.5.10^4 cells), which no map can measure: it is flipped away (a 3-2 flip of an edge, after a
 2-3 flip where the edge has four cells around it), among cells of the complex: the triangulation
@@ -263,7 +263,7 @@ facet_distance = facet_size / 10, facet_angle = 25, cell_radius_edge_ratio = 3, 
 sharp_edge_angle = 60. This aims at about 3.10^4 tetrahedra (the volume term) with at most
 about 8.10^3 boundary facets (the area term, for thin shapes). On the 66 closed, 2-manifold,
 self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.10^5
-tetrahedra (median 2.7.10^4) in 0.1 to 6 s (median 0.4 s) on one core; the largest counts come
+tetrahedra (median 2.7.10^4); the largest counts come
 from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
 with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
 (mpi_triang.off) stops at `maximum_number_of_vertices`. Where parts of the surface are closer
@@ -288,9 +288,8 @@ h / 10.
 \param surface a closed, 2-manifold triangle surface without self-intersections
 \param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
        ones listed below. Mesh_3's optimizers are off by default: the optimizers of this package
-       start from the refined mesh, and they cost far more than it (sphere.off, 2.6.10^4
-       tetrahedra: refinement 0.13 s; ODT 10 iterations 2.4 s, Lloyd 10 iterations 3.7 s,
-       perturbation 0.6 s, exudation 2.4 s).
+       start from the refined mesh, and they cost far more than it (each of them several times
+       the refinement's time).
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_point_map}

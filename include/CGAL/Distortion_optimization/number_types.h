@@ -89,7 +89,7 @@ T sqrt(const T& x)
 }
 
 /// The cube root of each lane, to within about 3 units in the last place, as libm's. No SIMD
-/// instruction computes one, and libm's took 6% of a MIPS run: here Halley's iteration
+/// instruction computes one, and libm's is a noticeable share of a MIPS run: here Halley's iteration
 /// y <- y (y^3 + 2x) / (2y^3 + x), whose relative error cubes at each step, runs from an
 /// estimate read off the exponent bits (a third of them, within 4%: three steps reach full
 /// precision), three times faster. Lanes that are zero, subnormal, negative, above a quarter of

@@ -116,8 +116,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(convergence_threshold_t, conver
 /// A `Local_solver`; default `Local_solver::GRADIENT_DESCENT`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(local_solver_t, local_solver)
 /// A `Vertex_order`; default `Vertex_order::SORTED_PER_SWEEP` (same energies as the paper's
-/// `GREEDY` order at about 1.7x less time on the package's parametrization benchmark). It applies
-/// to the one-thread sweep: with `number_of_threads` > 1 the parallel sweeps use the sorted order.
+/// `GREEDY` order in less time). It applies to the one-thread sweep: with `number_of_threads` > 1
+/// the parallel sweeps use the sorted order.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_order_t, vertex_order)
 
 /// A `Schedule` (or a `std::optional` of one: empty for the default); default `Schedule::GLOBAL` with projected

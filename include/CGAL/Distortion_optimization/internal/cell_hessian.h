@@ -33,8 +33,8 @@ template <int n> using Cell_hessian = Eigen::Matrix<double, n * (n + 1), n * (n 
 
 // The nearest positive semi-definite matrix to p (its negative eigenvalues dropped), in place.
 // Where p already is one, as the Hessian in s of a separable convex measure (symmetric Dirichlet)
-// always is, Sylvester's test on its leading minors spares the eigensolve, which was a tenth of a
-// 54K-cell Newton run. Eigen's closed form otherwise (its vectors are orthonormal to about
+// always is, Sylvester's test on its leading minors spares the eigensolve, a notable share of a
+// Newton run. Eigen's closed form otherwise (its vectors are orthonormal to about
 // sqrt(eps) where eigenvalues nearly repeat: the result stays positive semi-definite); the
 // iterative solver for a p whose trace overflows, where the closed form gives NaN.
 template <int n>

@@ -186,8 +186,7 @@ public:
     if(std::all_of(direction.begin(), direction.end(), [](const Vec& d) { return d == Vec::Zero(); })) return false;   // already harmonic
     // The full step when it is safe; otherwise the largest safe fraction of it, halved until the
     // energy drops, three times at most: a smaller fraction is no longer a start, and where the
-    // start is already better (the radial map of the 54K Mesh_3 cube under K) the 30 trials of a
-    // step took a tenth of the run.
+    // start is already better the 30 trials of a full line search are a costly share of the run.
     const double t_max = max_step(direction, 1 / 0.9);
     double t = t_max > 1 ? 1. : 0.9 * t_max;
     return line_search(direction, t, 0., [] { return 0.; }, 0., 4);
@@ -383,18 +382,16 @@ private:
     Eigen::MatrixXd b(H.rows(), 1), solution = Eigen::MatrixXd::Zero(H.rows(), 1);
     for(int j = 0; j < g.rows(); ++j) b.col(0).template segment<n>(n * j) = -g.row(j).transpose();
     if constexpr(n == 3) {
-      // A tetrahedral mesh's Newton system fills in far too much for a factorization (about 16 s
-      // per step at 5.10^4 tetrahedra): truncated Newton (Nash, "Newton-type minimization via
-      // the Lanczos method", 1984), preconditioned conjugate gradients from 0, cut at 60
-      // iterations (more where they fall short, below) or a residual of 1e-2; every iterate
-      // from 0 descends. Jacobi's preconditioner, except that a model's steps (nothing fixed)
-      // take the Laplacian's for the rest of the run once a Jacobi solve did not converge:
-      // MIPS's Hessian is nearly singular in each cell's scaling (69K-tetrahedron cube mapped by
-      // x|x|, K through MIPS: 16.3 s and 96 iterations against 4.7 s and 18). Where cells'
-      // stiffnesses differ by orders of magnitude (after untangling), the Laplacian's is the
-      // worse of the two: the measures' own steps keep Jacobi's. So do a model's with sliding
-      // vertices, whose tangent planes the coordinatewise Laplacian does not see (51K Mesh_3
-      // cube onto the ball, C: 24 iterations against 32).
+      // A tetrahedral mesh's Newton system fills in far too much for a factorization at every step:
+      // truncated Newton (Nash, "Newton-type minimization via the Lanczos method", 1984),
+      // preconditioned conjugate gradients from 0, cut at 60 iterations (more where they fall
+      // short, below) or a residual of 1e-2; every iterate from 0 descends. Jacobi's
+      // preconditioner, except that a model's steps (nothing fixed) take the Laplacian's for the
+      // rest of the run once a Jacobi solve did not converge: MIPS's Hessian is nearly singular in
+      // each cell's scaling, where the Laplacian's preconditioner converges in far fewer
+      // iterations. Where cells' stiffnesses differ by orders of magnitude (after untangling), the
+      // Laplacian's is the worse of the two: the measures' own steps keep Jacobi's. So do a model's
+      // with sliding vertices, whose tangent planes the coordinatewise Laplacian does not see.
       if(!laplacian_preconditioner_) {
         Eigen::DiagonalPreconditioner<double> jacobi;
         jacobi.compute(H);
@@ -411,12 +408,9 @@ private:
           // Steihaug, "Inexact Newton methods", 1982): the next solves may take twice the
           // iterations, and give them back once the residual is below a tenth. Where cells'
           // stiffnesses differ by orders of magnitude (a start untangled in the large), 60
-          // iterations may not even lower it: blobby's interior onto the unit ball, unscaled
-          // (27K tetrahedra), symmetric Dirichlet: 100 iterations ended at 4.55, where the
-          // minimum is 1.98 (reached in 34 with this). A proxy's direction (the measure's
-          // gradient in the model's metric) needs them as much: C on that map (2 threads) was
-          // at 4.14 after 100 iterations, 2.68 after 1000 (42 s); now 2.07 after 16 s and 1.93
-          // when it converges (184 iterations), though its solves stay above a half.
+          // iterations may not even lower it, and a run with a fixed count stalls far above the
+          // minimum. A proxy's direction (the measure's gradient in the model's metric) needs
+          // them as much, though its solves stay above a half.
           if(outcome.iterations >= jacobi_iterations_ && outcome.residual > 0.5)
             jacobi_iterations_ = std::min(2 * jacobi_iterations_, 16 * newton_iterations);
           else if(outcome.residual < 0.1)
@@ -466,7 +460,7 @@ private:
 
   // Each sliding vertex's row of g in its tangent plane. Its part along the normal is a force the
   // surface holds: solved for, it would spread through the interior and the step would no longer
-  // descend (51K Mesh_3 cube onto the ball, C: no Laplacian step descended after the 7th iteration).
+  // descend.
   void project_on_tangent_planes(const std::vector<Vec>& normal, Eigen::MatrixXd& g) const
   {
     for(std::size_t v = 0; v < normal.size(); ++v)
@@ -539,8 +533,7 @@ private:
   // the vertices of the crossing faces where they are (their direction zeroed; slope_of() then
   // gives the slope left) and tries the same length again, up to max_holds times: near a fold of
   // the boundary that moves closed to within rounding, every step of those few vertices crosses,
-  // and halving the whole step for them stalled the rest of the map (CGAL's dino.off, --start
-  // radial --boundary slide: steps of 1e-11 from the fifth iteration on).
+  // and halving the whole step for them would stall the rest of the map.
   template <class SlopeOf>
   bool line_search(std::vector<Vec>& direction, double& t, double slope, const SlopeOf& slope_of, double natural = 0,
                    int trials = 30)
@@ -571,10 +564,9 @@ private:
         // On tetrahedra a trial beyond the natural length can pass with little gain: twice a
         // Newton step of K's model lands across K's kink about as far as it started, and of a
         // measure's own convex part back where it started. The natural length is tried too; the
-        // lower is kept (69K cube x|x|, symmetric Dirichlet, interleaved runs: 3 iterations and
-        // 0.48-0.61 s against 4 and 0.61-0.73 s). Triangle meshes keep the longer step (their
-        // Newton directions come from a factorization, nearly exact: mannequin-devil reaches
-        // SLIM's energy in 0.47 s against 0.54 s with both tried).
+        // lower is kept, which saves iterations. Triangle meshes keep the longer step (their
+        // Newton directions come from a factorization, nearly exact: the second trial costs more
+        // than it gains).
         if(n == 3 && natural > 0 && t > natural) {
           place(natural);
           if(state_.accept_trial(moving.size(), moving_cell, state_.energy(), 0., true, boundary_ok)) t = natural;

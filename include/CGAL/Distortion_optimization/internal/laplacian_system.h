@@ -194,8 +194,8 @@ public:
     const int *outer = A.outerIndexPtr(), *inner = A.innerIndexPtr();
     const double* values = A.valuePtr();
     // H's entries come in n x n blocks on P's pattern (build_block_pattern): its product reads one
-    // index of P per block, and each vertex's n coordinates of u together (on the gyroid's
-    // 51K-tetrahedron cube, 40% less time than entry by entry).
+    // index of P per block, and each vertex's n coordinates of u together (much less time than
+    // entry by entry).
     const bool blocks = &A == &H_;
     const int *block_outer = P_.outerIndexPtr(), *block_inner = P_.innerIndexPtr();
     const auto product = [&](const Eigen::VectorXd& u, Eigen::VectorXd& pu) {
@@ -266,14 +266,12 @@ public:
     return std::find(converged.begin(), converged.end(), 0) == converged.end();
   }
 
-  // The harmonic map: the targets x of the free vertices that minimize sum_c w(c) |J_c|^2 with
-  // the fixed vertices where `targets` has them: in 2D by a sparse factorization, in 3D by
-  // conjugate gradients with Jacobi's preconditioner (a direct factorization of a 3D Laplacian
-  // fills in badly: tens of seconds at 400K tetrahedra) from the free vertices' current targets,
-  // to harmonic_tolerance. An incomplete Cholesky factor takes a third of the iterations, but its
-  // factorization and triangular solves are sequential: at 54K tetrahedra it cost 11 ms and saved
-  // none of the solve's 26 (7217 unknowns: 33 iterations against 105), at 833K 300 ms and none of
-  // 1.7 s (76 against 234), where every step of Jacobi's runs on the threads. Returns false,
+  // The harmonic map: the targets x of the free vertices that minimize sum_c w(c) |J_c|^2 with the
+  // fixed vertices where `targets` has them: in 2D by a sparse factorization, in 3D by conjugate
+  // gradients with Jacobi's preconditioner (a direct factorization of a 3D Laplacian fills in
+  // badly) from the free vertices' current targets, to harmonic_tolerance. An incomplete Cholesky
+  // factor takes a third of the iterations, but its factorization and triangular solves are
+  // sequential and saved no time, where every step of Jacobi's runs on the threads. Returns false,
   // with x unspecified, where the harmonic map is not defined: some set of free vertices is
   // connected to no fixed one (in particular when no vertex is fixed: the minimizers are then the
   // constant maps). Refills P with the unit factors.
@@ -286,15 +284,15 @@ public:
     refill(nullptr, nullptr, &rhs);
     if constexpr(n == 2) {
       // A planar Laplacian fills in little: a sparse LDL^T is several times faster than the
-      // conjugate gradients below (lion-head, 8K vertices: about 10 ms against 150 ms).
+      // conjugate gradients below.
       Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(P_);
       if(factorization.info() != Eigen::Success) return false;
       X = factorization.solve(rhs);
     } else {
       for(std::size_t v = 0; v < x.size(); ++v)
         if(column_[v] >= 0) X.row(column_[v]) = targets[v].transpose();
-      // A start that is already harmonic (one an earlier run wrote) needs no solve (at 54K
-      // tetrahedra, 10 ms of a 0.6 s run).
+      // A start that is already harmonic (one an earlier run wrote) needs no solve: one residual
+      // tells.
       const Eigen::MatrixXd residual = rhs - P_ * X;
       const double tolerance2 = harmonic_tolerance * harmonic_tolerance;
       if(((residual.colwise().squaredNorm().array() <= tolerance2 * rhs.colwise().squaredNorm().array())).all()) return true;
@@ -311,7 +309,7 @@ public:
 private:
   // assemble's blocks of moving cells, small enough for their cell matrices to stay in the L2
   // cache (in 3D, 1 MB of Laplacian parts, or 1.2 MB of 12 x 12 Hessians: with P's 8192 cells a
-  // block, the Hessians' round trip through memory was 13% of a 54K-cell MIPS run), and for
+  // block, the Hessians would make a costly round trip through memory), and for
   // each block the incidences of its cells' free vertices: the columns of P they fall in and, per
   // column, (position of the cell in the block) * (n + 1) + (the vertex's place in the cell)
   template <int k> static constexpr std::size_t block = k == 1 ? 8192 : 1024;

@@ -82,16 +82,11 @@ public:
     if(options.schedule != Schedule::LOCAL || options.harmonic_start)
       global_step_ = std::make_unique<Global_step<State>>(state, options.global_solver == Global_solver::PROJECTED_NEWTON);
     // The default schedule: Newton's steps alone, where a local sweep between them costs more
-    // than it gains (time to SLIM's energy, bench_parameterization: lion-head 0.29 s against
-    // 0.35 s, mannequin-devil 1.03 s against 1.50 s; the exponential stretch of a 69K cube, MIPS:
-    // 0.78 s against 0.88 s, symmetric Dirichlet 0.42 s against 0.44 s); otherwise alternating, as the
-    // reweighted Laplacian's steps need the sweeps (mannequin-devil: 1.36 s against 1.70 s alone).
+    // than it gains; otherwise alternating, as the reweighted Laplacian's steps need the sweeps.
     // Also Newton's steps alone where they are a smooth model's with the measure's minimizers
-    // (global_step.h), as the measure's local moves gain little near its kink (6K cube, nothing
-    // fixed, K: 0.16 s against 0.20 s). With a sliding boundary the model's minimizers differ,
-    // and its Hessian is only a proxy metric: the sweeps must go on (the ball map of the gyroid's
-    // 51K-tetrahedron cube, C: 1.3760 after 20 iterations alternating; the steps alone stall at
-    // 1.4159).
+    // (global_step.h), as the measure's local moves gain little near its kink. With a sliding
+    // boundary the model's minimizers differ, and its Hessian is only a proxy metric: the sweeps
+    // must go on (the steps alone stall at a higher energy).
     // A step that one cell's safe step holds back may gain almost nothing: a sweep then follows it
     // in the same iteration (minimize()), so that the run stops only when neither gains.
     const bool newton_alone = global_step_ && global_step_->is_newton() && !global_step_->model_misses_minimizers();
@@ -116,9 +111,7 @@ public:
   // Whether a local sweep follows an iteration that gained too little or whose Newton step was cut
   // short (the default schedule of global steps alone), and that sweep. Where a cell about to
   // flatten or the boundary guard blocks Newton's steps, the sweep moves the vertices around the
-  // blocker one by one: from the ABCD octopus's untangled UV map, SD 8.85 after 100 iterations
-  // against 10.62 with sweeps after stalls only; mannequin-devil (border fixed) reaches SLIM's
-  // energy in 9 iterations instead of 13.
+  // blocker one by one, which Newton's steps would otherwise keep running into.
   bool sweeps_on_stall() const { return !options_.schedule && schedule_ == Schedule::GLOBAL; }
   bool global_step_was_blocked() const { return global_step_ && global_step_->was_blocked(); }
   void sweep_after_stall() { sweep(); }
@@ -240,7 +233,7 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
     energy = std::min(previous, state.energy() * normalization);
     // With a positive threshold, an energy within 1e-9 (relative) of the floor has nothing left
     // to gain: near a kink (K, C, V at their minimum) the last digits come only linearly. No
-    // sweep follows it either (on the 6K cube with nothing fixed, it took a sixth of the run).
+    // sweep follows it either: it would cost a share of the run for nothing.
     const double above = std::abs(previous - floor);
     const auto at_floor = [&] { return options.threshold > 0 && std::abs(energy - floor) <= 1e-9 * std::abs(energy); };
     const auto has_converged = [&] { return at_floor() || !(previous - energy > options.threshold * above); };

@@ -190,9 +190,9 @@ public:
 private:
   // valid_[c]: 0 inverted or flat (exact predicate); 1 valid; `robust` valid and, under a measure
   // finite on flat cells, not fragile (is_fragile()): such a cell must stay so. A measure finite
-  // there would otherwise squeeze cells to areas of 1e-19, valid in doubles but inverted by the
-  // rounding of the decimal output another program reads (ARAP with a free border on lion-head:
-  // 16% of its triangles); under a normalized measure they cost too much to get there.
+  // there would otherwise squeeze cells to tiny areas, valid in doubles but inverted by the
+  // rounding of the decimal output another program reads; under a normalized measure they cost
+  // too much to get there.
   static constexpr unsigned char robust = 2;
   unsigned char status(std::size_t c) const
   {
