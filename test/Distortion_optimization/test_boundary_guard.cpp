@@ -918,9 +918,9 @@ TEST(BoundaryGuard, RandomMovesOfSeveralPiecesSpatial)
   check_random_moves_of_pieces(m, 5, 1500, 0.01, 100, 5);
 }
 
-// Hostile round 8's case: a grid at half its rest size grows back under the isometric measure, its
-// border free, towards a small triangle beside it (a piece of its own, at its rest shape). The run
-// keeps the triangle outside the grid; a start with the triangle inside is refused.
+// A grid at half its rest size grows back under the isometric measure, its border free, towards
+// a small triangle beside it (a piece of its own, at its rest shape). The run keeps the triangle
+// outside the grid; a start with the triangle inside is refused.
 TEST(BoundaryGuard, MinimizeKeepsPiecesApart)
 {
   using V = Vector<2>;

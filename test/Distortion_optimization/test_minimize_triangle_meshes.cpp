@@ -442,7 +442,7 @@ TEST(MinimizeDistortion, AMeasureThatShrinksTheMapNeedsThreeConstrainedVerticesP
                                          "minimum collapses that piece"), std::string::npos) << e.what();
   }
   EXPECT_EQ(targets_of(mesh, uv), before);
-  // Three on one line hold nothing across it (hostile round 9: the piece ended 9e-5 high).
+  // Three on one line hold nothing across it: the piece would collapse onto that line.
   for(unsigned v : {25u, 27u, 29u}) pinned[Mesh2::Vertex_index(v)] = true;
   try {
     CGAL::minimize_distortion(mesh, uv, DO::Dirichlet(), CGAL::parameters::vertex_is_constrained_map(pinned));

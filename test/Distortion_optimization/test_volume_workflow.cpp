@@ -655,7 +655,7 @@ TEST(VolumeWorkflow, DetailsFinerThanTheSizesAreRefused)
   expect_invalid([&] { DO::mesh_interior(dumbbell); }, "has 2 components of genera 0, 0, the surface 1 component of genus 0");
 
   // The sides of a slit far narrower than the sizes (the facet distance is 0.00657 here) kept Mesh_3
-  // protecting their sharp edges for minutes; one of 0.05 meshes in a second.
+  // protecting their sharp edges far too long: it is refused; a wider slit (0.05) meshes.
   expect_invalid([&] { DO::mesh_interior(split_ring(0.001)); },
                  " apart, less than the facet distance (0.00657), along more than the edge size (0.0657), and meet only "
                  "farther away (the sides of a slit?)");
@@ -761,9 +761,8 @@ TEST(VolumeWorkflow, StarShapedToBallThenOptimizedKeepsEveryCell)
 // Blobby's interior onto the unit ball as it is (the ball map enlarges it about 4.4 times), then
 // untangled: the cells' stiffnesses differ by orders of magnitude, where 60 iterations of Jacobi's
 // conjugate gradients did not even lower the Newton system's residual. Symmetric Dirichlet then
-// stopped at the 100-iteration cap far above its minimum (here 2.24 at 8.5K tetrahedra; 4.55 at
-// 27K, where the minimum is 1.98), and so did C through its proxy (3.39 at 2K tetrahedra; 4.14 at
-// 27K, where it converges to 1.93 now): the solves now take the iterations they need.
+// stopped at the 100-iteration cap far above its minimum, and so did C through its proxy: the
+// solves now take the iterations they need, and both converge.
 template <class Measure>
 void expect_enlarging_ball_map_converges(const Surface& blobby, double cell_size, std::size_t cells, const Measure& measure,
                                          std::size_t iterations, double energy)
@@ -818,8 +817,7 @@ TEST(VolumeWorkflow, StartMapsAreTheSameAtAnyScale)
 // The ball map untangled with its boundary sliding, for the source scaled by 2^a and the ball (and
 // its sphere) by 2^b: the untangling's barrier relates determinants to a typical one and lengths
 // to a typical edge through cube roots, which libm's cbrt and pow took with other last digits
-// for other sizes (the tool's volume mode gave another start from a surface 4 times larger, and
-// results 1e-4 apart after 10 iterations). Now the same map, scaled, bit for bit.
+// for other sizes. Now the same map, scaled, bit for bit.
 TEST(VolumeWorkflow, UntangledBallMapIsTheSameAtAnyScale)
 {
   const Surface cube = triangulated_cube();   // its ball map flattens cells across its edges
@@ -845,8 +843,8 @@ TEST(VolumeWorkflow, UntangledBallMapIsTheSameAtAnyScale)
 }
 
 // A tight barrier can wall a tangle in: the ball map of CGAL's cross.off (a plus sign 1 x 1 x 0.2)
-// kept one interior cell inverted, its four vertices free, for 57 rounds while eps fell to its
-// floor, and untangle() threw. Loosened again, the barrier lets the cell's ring give way.
+// kept one interior cell inverted, its four vertices free, while eps fell to its floor, and
+// untangle() threw. Loosened again, the barrier lets the cell's ring give way.
 TEST(VolumeWorkflow, UntanglingLoosensABarrierThatWallsATangleIn)
 {
   DEMO_SURFACE(cross, "cross.off");
@@ -1046,8 +1044,8 @@ TEST(VolumeWorkflow, EnlargingBallMapConvergesUnderIsometricDilatation)
 
 // The ball map of a tetrahedron (the corner x, y, z >= 0, x + y + z <= 1) inverts cells along its
 // edges and at its corners, some ten times the typical volume. With the boundary sliding, the
-// untangling's first round at eps = 1 collapsed the map instead (196 inverted cells became 3180 at
-// this size, still 1045 after 50 s): it now starts lower and takes a few rounds.
+// untangling's first round at eps = 1 collapsed the map instead, leaving far more cells inverted
+// than the start had: it now starts lower and takes a few rounds.
 TEST(VolumeWorkflow, BallMapOfATetrahedronIsUntangledWithItsBoundarySliding)
 {
   std::istringstream off("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");

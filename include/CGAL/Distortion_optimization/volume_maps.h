@@ -213,10 +213,9 @@ void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C
 /// kept by any linear map). On a domain as wide in every direction, such as a cube or a ball about
 /// its centre, `A` is a multiple of the identity up to the mesh's own asymmetry, and the map is
 /// theirs. An elongated domain is no longer squeezed across its length onto narrow cones about its
-/// axis: the tool could not untangle the ball maps of 4 x 1 x 1, 20 x 1 x 1 and 100 x 1 x 1 boxes
-/// with their boundary sliding (it gave up after 4 s, 179 s and 70 s); with `A` each is untangled
-/// in 1.4 s or less. The domain must be star-shaped about `center`: `center` on the inner side of
-/// the plane of every boundary facet (exact predicates), checked before anything is written.
+/// axis, a start that even the untangling with the boundary sliding may fail to repair. The domain
+/// must be star-shaped about `center`: `center` on the inner side of the plane of every boundary
+/// facet (exact predicates), checked before anything is written.
 ///
 /// Even then the map is not always valid: near a sharp edge of the domain, a tetrahedron whose four
 /// vertices are on the boundary, on both sides of the edge, can come out flat or inverted (the
@@ -268,7 +267,7 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const i
     // edge or a vertex meets it in several facets). The facets the ray meets come from the exact
     // predicate; the exit is where the ray meets their planes. Constructing the intersections
     // instead missed them all, in double arithmetic, where the ray passes through a vertex of the
-    // boundary, as it does for every boundary vertex (a Mesh_3 cube at cell size 0.1).
+    // boundary, as it does for every boundary vertex.
     std::vector<typename Tree::Primitive_id> facets;
     tree.all_intersected_primitives(typename K::Ray_3(scaled_center, u), std::back_inserter(facets));
     double R = 0;

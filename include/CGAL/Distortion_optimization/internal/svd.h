@@ -202,10 +202,9 @@ std::array<T, 3> symmetric_eigenvalues(const T& a00, const T& a11, const T& a22,
 // Whether the eigenvalues l of a Gram matrix of the given trace are apart enough for the fast
 // paths below, and the trace is far from overflow. The values alone (`for_values`) need gaps above
 // 1e-2 of the spread l_1 - l_3: the roots of the normalized cubic are then simple, and each l_i is
-// within a few ulps of l_1 even where all three cluster (a near-conformal cell; measured: below
-// 3e-14 relative to sigma_1 over random Jacobians, 5e-15 near conformal). The singular vectors'
-// products (gram_spectral_product) divide by the gaps: they need gaps above 1e-2 of l_1. Both
-// need l_3 > 1e-4 l_1 (sigma_2 from sqrt(l_2)).
+// within a few ulps of l_1 even where all three cluster (a near-conformal cell). The singular
+// vectors' products (gram_spectral_product) divide by the gaps: they need gaps above 1e-2 of l_1.
+// Both need l_3 > 1e-4 l_1 (sigma_2 from sqrt(l_2)).
 inline bool are_separated(double trace, const Vector<3>& l, bool for_values = false)
 {
   const double scale = for_values ? l[0] - l[2] : l[0];
@@ -228,7 +227,7 @@ inline Vector<3> signed_singular_values_from_gram(const Matrix<3>& J, const Vect
   return Vector<3>(s1, s2, J.determinant() / (s1 * s2));
 }
 
-// Values only: from the separated eigenvalues (about a fifth of the full decomposition's cost),
+// Values only: from the separated eigenvalues (far cheaper than the full decomposition),
 // otherwise the full decomposition.
 inline Vector<3> signed_singular_values(const Matrix<3>& J)
 {

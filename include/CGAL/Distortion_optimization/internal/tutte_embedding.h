@@ -7,11 +7,10 @@
 // 1997). It is injective with every triangle positively oriented (in exact arithmetic), whatever
 // the start, and so it is with the boundary on any strictly convex polygon: the untangler's last
 // resort. For a map with a free boundary when the boundary guard holds a fold in place: an ear of
-// the boundary turned inside out (a tentacle tip of the ABCD octopus) can only come right by
-// moving far through the outside, which no descent on the barrier finds; with the boundary guard
-// it stays inverted. For a boundary fixed on a convex polygon, where the descent ends with cells
-// still inverted (a vertex of lion-head's Tutte map moved 100 times the disk's radius away: 3
-// inverted cells at the start, 8 after 73 rounds).
+// the boundary turned inside out can only come right by moving far through the outside, which no
+// descent on the barrier finds; with the boundary guard it stays inverted. For a boundary fixed on
+// a convex polygon, where the descent ends with cells still inverted (a vertex far outside the
+// polygon can leave more cells inverted after the rounds than before them).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_TUTTE_EMBEDDING_H

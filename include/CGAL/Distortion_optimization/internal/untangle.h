@@ -9,10 +9,9 @@
 // sigma = max(1 - E / E_prev, 0.1), mu = (1 - sigma) chi(D-, eps), and the new eps makes
 // chi(D-, eps) = mu, i.e. eps = 2 sqrt(mu (mu - D-)) while D- < mu; so the worst cell's stand-in
 // determinant shrinks by at least 10% a round, faster when the round gained much. Ours floors
-// sigma at 0.5 rather than 0.1 and lets eps fall at most tenfold a round: on the ABCD cases
-// (benchmark/bench_untangle.sh) this takes a third to a tenth of the rounds, and a faster fall
-// collapses folds into flat strips that no later round opens. eps starts at 1, or at 0.01 when
-// the boundary slides (untangle_everywhere() says why).
+// sigma at 0.5 rather than 0.1 and lets eps fall at most tenfold a round: this takes far fewer
+// rounds, and a faster fall collapses folds into flat strips that no later round opens. eps starts
+// at 1, or at 0.01 when the boundary slides (untangle_everywhere() says why).
 //
 // A cell is untangled when its orientation is its source's (exact predicate) and it is not
 // numerically flat (simplicial_map.h): a cell valid by a hair would make a normalized measure
@@ -74,9 +73,8 @@ double smallest_jacobian_determinant(const Simplicial_map<n>& map, const Workers
 
 // The map's typical |det J|, to which the barrier relates determinants: the median over the cells.
 // Neither the signed volume ratio (a free boundary that crosses itself may enclose almost no
-// signed volume: the ABCD elephants) nor the mean |det J| (a few cells stretched a hundredfold in a
-// tangle: the bent wrench) tells the scale of the untangled map as well; the mean only stands in
-// when most cells are flat.
+// signed volume) nor the mean |det J| (a few cells stretched a hundredfold in a tangle) tells the
+// scale of the untangled map as well; the mean only stands in when most cells are flat.
 template <int n>
 double typical_jacobian_determinant(const Simplicial_map<n>& map)
 {
@@ -268,10 +266,9 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
   barrier.reference_det = typical_jacobian_determinant(problem.map);
   // A boundary that slides can shrink along its surface, and at eps = 1 the barrier prefers a
   // collapsed cell (F = 2 theta / eps = 1 in 3D) to an undistorted one (about 2.15): the first
-  // round then flattened half of the ball map of a tetrahedron (12K of its 25K cells), which no
-  // later round reopened. From eps = 0.01 that map untangles in 2 rounds (1.3 s), and the ball maps
-  // of the other shapes measured in fewer rounds than from 1 (a cross: 0.5 s instead of 8.7). A
-  // fixed or free boundary keeps eps = 1, better on the ABCD cases (the wrench: 15 rounds, not 21).
+  // round then flattens much of the map, and no later round reopens it. From eps = 0.01 such maps
+  // untangle in fewer rounds. A fixed or free boundary keeps eps = 1, which takes fewer rounds
+  // there.
   if(std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; }))
     barrier.epsilon = 0.01;
   Barrier_energy<n> energy(problem, workers);
@@ -292,8 +289,8 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
   // Checked after every step: the exact count only once no cell is numerically flat any more.
   const auto untangled = [&] { return count([&](std::size_t c) { return is_numerically_flat(problem.map, c); }) == 0 && tangled() == 0; };
   // A part (throw_on_failure false) gains more from lowering eps often than from converging each
-  // round: 200 steps a round untangle CGAL's ARAP map of lion-head 7 times faster than 1000. The
-  // whole map keeps 1000: 200 leave half the cells of the ABCD 30K elephant inverted.
+  // round, hence 200 steps a round. The whole map keeps 1000: with 200, large tangles stay
+  // inverted.
   const std::size_t steps_per_round = throw_on_failure ? 1000 : 200;
   while(report.iterations < options.iterations) {
     ++report.iterations;
@@ -330,12 +327,10 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
     const double sigma = std::max(before > 0 ? 1 - after / before : 0., 0.5), mu = (1 - sigma) * chi;
     barrier.epsilon = std::max({floor, 0.1 * e, worst < mu ? 2 * std::sqrt(mu * (mu - worst)) : floor});
     // A tight barrier can lock a tangle in: its cells' rings are valid and the barrier walls them
-    // in. The ball map of CGAL's cross.off left one interior cell, its four vertices free,
-    // inverted for 57 rounds while eps fell to its floor (the 20 x 1 x 1 box, the 2 x 2 x 0.06
-    // plate: the same). Loosened back to its start value, from the map as it is, the barrier lets
-    // the ring give way (cross and box: untangled in the next round; plate: 29 rounds later): up
-    // to 3 times, once the count has made no new low for 5 rounds and eps is below a thousandth of
-    // its start.
+    // in, so that a cell whose vertices are all free can stay inverted while eps falls to its
+    // floor. Loosened back to its start value, from the map as it is, the barrier lets the ring
+    // give way: up to 3 times, once the count has made no new low for 5 rounds and eps is below a
+    // thousandth of its start.
     if(rounds_since_fewest >= 5 && barrier.epsilon < 1e-3 * start_epsilon && restarts < 3) {
       barrier.epsilon = start_epsilon;
       rounds_since_fewest = 0;
@@ -399,13 +394,12 @@ inline Options recording_rounds(const Options& options, std::size_t& rounds)
 // along the sharp edges of a domain) are first untangled in a part of the map the size of the
 // tangle: their own vertices free (ring 0), then within 1, 2, 4, ..., 32 rings of those still
 // inverted (a part gives up after three rounds without its count falling a tenth below its low);
-// the whole map only if cells remain inverted. Ring 0 suits scattered cells: the ball map of a
-// 51K-tetrahedron Mesh_3 cube flattens 121 cells along its edges, whose one ring is half the map
-// (4.3 s untangled whole, 0.09 s in ring 0). A tangle that needs room around it stalls there
-// against the fixed vertices, squeezing its neighbours: ring 1 then starts again from the start
-// map (the ABCD wrench: 5 rounds from it, 15 from ring 0's best); wider rings start from the best
-// map of the last. A part's untangled map is less even than the whole's: on the exuded 26K cube
-// of gyroid_texture, C then takes 39 iterations instead of 29 (1.33 s in all against 1.25 s).
+// the whole map only if cells remain inverted. Ring 0 suits scattered cells, such as the flat
+// cells along the edges of a ball map, whose one ring can be half the map. A tangle that needs
+// room around it stalls there against the fixed vertices, squeezing its neighbours: ring 1 then
+// starts again from the start map, which takes fewer rounds than from ring 0's best; wider rings
+// start from the best map of the last. A part's untangled map is less even than the whole's, so
+// the optimization after it can take more iterations.
 template <int n, class GeomTraits>
 Untangle_result untangle_in_parts(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
@@ -470,9 +464,9 @@ Untangle_result untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
 // Untangles problem.map in place: untangle_in_parts(), and with the boundary guard (options'
 // global_injectivity, some free boundary vertex) first without it, keeping that result if its
 // boundary does not cross itself (exact test). Holding the guard from the start costs the barrier
-// its freedom where a fold presses against the boundary: on CGAL's ARAP map of lion-head, a few
-// cells squeezed there stay inverted with the guard and open without it, the boundary uncrossed.
-// Only when the boundary then crosses does the guarded run start again from the start map.
+// its freedom where a fold presses against the boundary: cells squeezed there can stay inverted
+// with the guard and open without it, the boundary uncrossed. Only when the boundary then crosses
+// does the guarded run start again from the start map.
 template <int n, class GeomTraits>
 Untangle_result untangle_from_start(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {

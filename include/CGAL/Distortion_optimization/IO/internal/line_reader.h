@@ -43,8 +43,8 @@ enum class Line_status { line, end_of_stream, too_long };
 // `length`: `too_long` as soon as the line has more than `max_bytes` bytes (the rest of it is left
 // unread). `end_of_stream` (and failbit, as std::getline) when nothing is left. Any reader of a
 // file the user gives should read its lines through this or Line_reader. istream::getline copies
-// straight out of the stream's buffer (a character at a time through the streambuf was a quarter
-// of reading a mesh).
+// straight out of the stream's buffer (a character at a time through the streambuf was a large
+// part of reading a mesh).
 inline Line_status read_bounded_line(std::istream& in, std::string& buffer, std::size_t& length, std::size_t max_bytes = max_line_bytes)
 {
   length = 0;
@@ -204,7 +204,7 @@ public:
 
   long long integer(std::string_view token) const
   {
-    // from_chars first: strtoll, which consults the locale, was over a quarter of reading a mesh.
+    // from_chars first: strtoll, which consults the locale, was a large part of reading a mesh.
     // strtoll takes what from_chars does not (a leading '+') and tells an overflow.
     long long i;
     const std::from_chars_result fast = std::from_chars(token.data(), token.data() + token.size(), i);
