@@ -76,7 +76,8 @@ int main(int argc, char** argv)
         Mesh refined = coarse;
         UV refined_uv = refined.property_map<Mesh::Vertex_index, K::Point_2>("v:uv").first;
         const auto start = std::chrono::steady_clock::now();
-        DO::subdivide_map(refined, refined_uv, level, DO::Subdivision_scheme::LOOP);
+        DO::subdivide_map(refined, refined_uv,
+                          DO::parameters::subdivision_scheme(DO::Subdivision_scheme::LOOP).number_of_iterations(level));
         const double loop_seconds = coarse_seconds + seconds_since(start);
         const double loop_energy = energy(refined, refined_uv);
         // The same refined source, optimized from its own Tutte start.

@@ -470,9 +470,10 @@ TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
     ASSERT_EQ(count_flipped(mesh, uv), 0u) << name;
     // With a square border too: CGAL's runs clockwise, and every face came out mirrored.
     auto square = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:square").first;
-    DO::initial_parameterization(mesh, square, DO::Initial_map::TUTTE, DO::Border_shape::SQUARE);
+    DO::initial_parameterization(mesh, square, DO::parameters::border_shape(DO::Border_shape::SQUARE));
     EXPECT_EQ(count_flipped(mesh, square), 0u) << name;
-    DO::initial_parameterization(mesh, square, DO::Initial_map::DISCRETE_CONFORMAL, DO::Border_shape::SQUARE);
+    DO::initial_parameterization(mesh, square, DO::parameters::initial_map(DO::Initial_map::DISCRETE_CONFORMAL,
+                                                                         DO::parameters::border_shape(DO::Border_shape::SQUARE)));
     EXPECT_LT(count_flipped(mesh, square), mesh.number_of_faces() / 10) << name;
     auto tutte = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:tutte").first;
     for(auto v : mesh.vertices()) tutte[v] = uv[v];

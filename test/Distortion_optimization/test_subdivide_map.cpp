@@ -60,7 +60,7 @@ TEST(SubdivideMap, LinearSubdivisionKeepsEveryEnergyExactly)
     points.push_back(p.mesh.point(v));
     targets.push_back(p.uv[v]);
   }
-  DO::subdivide_map(p.mesh, p.uv, 2, DO::Subdivision_scheme::LINEAR);
+  DO::subdivide_map(p.mesh, p.uv, DO::parameters::subdivision_scheme(DO::Subdivision_scheme::LINEAR).number_of_iterations(2));
   // Each level: one vertex per edge, four triangles per triangle.
   const std::size_t v1 = v0 + e0, e1 = 2 * e0 + 3 * f0, f1 = 4 * f0;
   EXPECT_EQ(p.mesh.number_of_faces(), 4 * f1);
@@ -77,7 +77,7 @@ TEST(SubdivideMap, LinearSubdivisionKeepsEveryEnergyExactly)
   // A planar deformation (Point_2 source) too.
   Noisy_map g([](const Point_2& q) { return Point_2(2 * q.x() + 0.3 * q.y() * q.y(), q.y() + 0.1 * q.x()); }, 0.01);
   const auto planar_before = energies(g.mesh, g.uv);
-  DO::subdivide_map(g.mesh, g.uv, 1);
+  DO::subdivide_map(g.mesh, g.uv);
   const auto planar_after = energies(g.mesh, g.uv);
   for(const auto& [name, e] : planar_before) EXPECT_NEAR(planar_after.at(name), e, 1e-12 * e) << name;
 }
@@ -92,7 +92,7 @@ TEST(SubdivideMap, LoopKeepsAffineMapsAffine)
   const auto affine = [](const Point_2& q) { return Point_2(1.5 * q.x() - 0.4 * q.y() + 0.2, 0.3 * q.x() + 0.8 * q.y()); };
   for(auto v : mesh.vertices()) uv[v] = affine(mesh.point(v));
   const double k = DO::with_measure("conformal", [&](const auto& m) { return CGAL::compute_distortion(mesh, uv, m); }).max;
-  DO::subdivide_map(mesh, uv, 2, DO::Subdivision_scheme::LOOP);
+  DO::subdivide_map(mesh, uv, DO::parameters::subdivision_scheme(DO::Subdivision_scheme::LOOP).number_of_iterations(2));
   EXPECT_EQ(count_flipped(mesh, uv), 0u);
   for(auto v : mesh.vertices()) {
     const Point_2& q = mesh.point(v);
@@ -133,7 +133,7 @@ TEST(SubdivideMap, LoopStencilsOnTheOldVertices)
     add(v, 1 - w);
     expected.push_back(Point_2(x, y));
   }
-  DO::subdivide_map(mesh, uv, 1, DO::Subdivision_scheme::LOOP);
+  DO::subdivide_map(mesh, uv, DO::parameters::subdivision_scheme(DO::Subdivision_scheme::LOOP));
   for(std::size_t i = 0; i < expected.size(); ++i)
     EXPECT_LT(std::sqrt(CGAL::squared_distance(uv[Mesh2::Vertex_index(i)], expected[i])), 1e-15) << i;
 }
@@ -142,7 +142,7 @@ TEST(SubdivideMap, LoopKeepsARealOptimizedParametrizationInjective)
 {
   Optimized_parametrization p;
   const double coarse = CGAL::compute_distortion(p.mesh, p.uv, DO::Symmetric_dirichlet()).mean_volume;
-  DO::subdivide_map(p.mesh, p.uv, 2, DO::Subdivision_scheme::LOOP);
+  DO::subdivide_map(p.mesh, p.uv, DO::parameters::subdivision_scheme(DO::Subdivision_scheme::LOOP).number_of_iterations(2));
   EXPECT_EQ(count_flipped(p.mesh, p.uv), 0u);
   const double fine = CGAL::compute_distortion(p.mesh, p.uv, DO::Symmetric_dirichlet()).mean_volume;
   EXPECT_TRUE(std::isfinite(fine));
@@ -156,6 +156,6 @@ TEST(SubdivideMap, FacesThatAreNotTrianglesAreRefused)
              d = quad.add_vertex(Point_2(0, 1));
   quad.add_face(a, b, c, d);
   auto uv = quad.add_property_map<Mesh2::Vertex_index, Point_2>("v:uv").first;
-  EXPECT_THROW(DO::subdivide_map(quad, uv, 1), DO::Invalid_input);
+  EXPECT_THROW(DO::subdivide_map(quad, uv), DO::Invalid_input);
   EXPECT_EQ(quad.number_of_faces(), 1u);
 }

@@ -262,7 +262,7 @@ TEST(Untangle, ABorderFixedOnAConvexPolygonIsUntangledFromTutteEmbeddingThere)
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", mesh));
   auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
   for(const DO::Border_shape shape : {DO::Border_shape::CIRCLE, DO::Border_shape::SQUARE}) {
-    DO::initial_parameterization(mesh, uv, DO::Initial_map::TUTTE, shape);
+    DO::initial_parameterization(mesh, uv, DO::parameters::border_shape(shape));
     ASSERT_EQ(count_flipped(mesh, uv), 0u);
     const std::vector<Point_2> tutte = targets_of(mesh, uv);
     double radius = 0;

@@ -171,8 +171,9 @@ int run_triangles(const Command_line& c)
   if(c.subdivide > 0) {
     // The source and the optimized map refined together (paper 4.3); the source goes to its own file.
     const bool injective = r.inverted_cells == 0 && DO::is_boundary_embedded(mesh, uv);
-    DO::subdivide_map(mesh, uv, static_cast<unsigned>(c.subdivide),
-                      c.scheme == "loop" ? DO::Subdivision_scheme::LOOP : DO::Subdivision_scheme::LINEAR);
+    DO::subdivide_map(mesh, uv, DO::parameters::subdivision_scheme(c.scheme == "loop" ? DO::Subdivision_scheme::LOOP
+                                                                                      : DO::Subdivision_scheme::LINEAR)
+                                  .number_of_iterations(static_cast<unsigned>(c.subdivide)));
     DO::IO::Triangle_soup refined;
     for(Vertex v : mesh.vertices()) {
       source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());

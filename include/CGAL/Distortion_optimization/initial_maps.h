@@ -12,6 +12,7 @@
 #include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <CGAL/Bbox_3.h>
@@ -50,6 +51,19 @@ enum class Initial_map
   DISCRETE_CONFORMAL ///< cotangent weights (discrete conformal map): smoother, may flip triangles
 };
 
+namespace internal_np {
+enum initial_map_t { initial_map };
+enum border_shape_t { border_shape };
+} // namespace internal_np
+
+namespace parameters {
+/// An `Initial_map`: the kind of start map of `initial_parameterization()`; default `Initial_map::TUTTE`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(initial_map_t, initial_map)
+/// A `Border_shape`: the shape the border is mapped to by `initial_parameterization()`; default
+/// `Border_shape::CIRCLE`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(border_shape_t, border_shape)
+} // namespace parameters
+
 namespace internal {
 
 template <class TriangleMesh, class UVMap, class Parameterizer>
@@ -78,7 +92,9 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
 /// \ingroup PkgDistortionOptimizationRef
 /// Writes into `uv` (a vertex property map to `Point_2`) a fixed-border parameterization of the
 /// disk `tm` (a `FaceListGraph` of triangles with one border): the longest border is mapped to a
-/// circle or a square by arc length, the inner vertices by `kind`; then the map is scaled about
+/// circle or a square by arc length (named parameter `Distortion_optimization::parameters::border_shape()`,
+/// default a circle), the inner vertices by the `Initial_map` given as
+/// `Distortion_optimization::parameters::initial_map()` (default Tutte's); then the map is scaled about
 /// the origin so that its area is the surface's (isometric measures compare lengths, and CGAL's
 /// parameterizers map to the unit square whatever the surface's size), and mirrored (v to -v)
 /// where it reverses the faces' orientation as a whole, as CGAL's square border does: the
@@ -87,11 +103,14 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
 /// are accepted: a mesh far from unit size is parameterized scaled by a power of two.
 /// \throws Invalid_input if `tm` is empty, has several connected components or no border, or CGAL's
 /// parameterizer fails (e.g. the mesh is not a topological disk).
-template <class TriangleMesh, class UVMap>
-void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind = Initial_map::TUTTE,
-                              Border_shape border = Border_shape::CIRCLE)
+template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParameters& np = CGAL::parameters::default_values())
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Initial_map kind = choose_parameter(get_parameter(np, internal_np::initial_map), Initial_map::TUTTE);
+  const Border_shape border = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::CIRCLE);
   using Point_3 = typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using Point_2 = typename boost::property_traits<UVMap>::value_type;
   // CGAL's parameterizers square lengths, and the area below squares areas: far from unit size they
@@ -109,7 +128,7 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, Initial_map kind
       copy.point(v) = Point_3(scale * CGAL::to_double(p.x()), scale * CGAL::to_double(p.y()), scale * CGAL::to_double(p.z()));
     }
     auto copy_uv = copy.template add_property_map<typename CGAL::Surface_mesh<Point_3>::Vertex_index, Point_2>("v:uv").first;
-    initial_parameterization(copy, copy_uv, kind, border);
+    initial_parameterization(copy, copy_uv, parameters::initial_map(kind, parameters::border_shape(border)));
     for(const auto& [v, w] : copied)
       put(uv, v, Point_2(CGAL::to_double(copy_uv[w].x()) / scale, CGAL::to_double(copy_uv[w].y()) / scale));
     return;

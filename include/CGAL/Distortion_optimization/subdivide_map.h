@@ -11,8 +11,10 @@
 #include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <Eigen/Core>
@@ -33,6 +35,15 @@ enum class Subdivision_scheme
   LINEAR,   ///< edge midpoints, old vertices kept: the map is unchanged on every point
   LOOP      ///< Loop's stencils (with its border rules) on the source and the target alike
 };
+
+namespace internal_np {
+enum subdivision_scheme_t { subdivision_scheme };
+} // namespace internal_np
+
+namespace parameters {
+/// A `Subdivision_scheme` for `subdivide_map()`; default `Subdivision_scheme::LINEAR`.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(subdivision_scheme_t, subdivision_scheme)
+} // namespace parameters
 
 namespace internal {
 
@@ -106,7 +117,7 @@ std::vector<Eigen::Matrix<double, d, 1>> subdivided_values(const Mesh& mesh,
 /*!
 \ingroup PkgDistortionOptimizationRef
 
-Subdivides a triangle map `levels` times: each triangle of `mesh` becomes four (one new vertex
+Subdivides a triangle map (`number_of_iterations` times, once by default): each triangle of `mesh` becomes four (one new vertex
 per edge), in the source (the mesh's points) and in the target alike, so that the result is a
 map between the two refined meshes with the same connectivity. The paper (section 4.3, Fig. 11)
 subdivides an optimized map this way to approximate the optimal map at a higher resolution for
@@ -130,15 +141,31 @@ refines both with the same stencils and rebuilds the mesh once per level.
        removed elements (otherwise they are renumbered in iteration order), the new vertices
        follow, one per edge; its faces and edges are renumbered, and their properties dropped
 \param target the target of each vertex, written for every vertex of the refined mesh
-\param levels the number of refinements (each multiplies the triangles by four; 0 leaves the map
-       as it is)
-\param scheme `Subdivision_scheme::LINEAR` (the default) or `Subdivision_scheme::LOOP`, as above
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the ones below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the number of refinements (each multiplies the triangles by four; 0 leaves the map as it is)}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{subdivision_scheme}
+    \cgalParamDescription{the scheme, as above (`Distortion_optimization::parameters::subdivision_scheme()`)}
+    \cgalParamType{`Distortion_optimization::Subdivision_scheme`}
+    \cgalParamDefault{`Subdivision_scheme::LINEAR`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
 \throws Invalid_input if a face is not a triangle
 */
-template <class Point, class TargetMap>
-void subdivide_map(CGAL::Surface_mesh<Point>& mesh, TargetMap target, unsigned levels,
-                   Subdivision_scheme scheme = Subdivision_scheme::LINEAR)
+template <class Point, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void subdivide_map(CGAL::Surface_mesh<Point>& mesh, TargetMap target, const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const unsigned levels = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 1u);
+  const Subdivision_scheme scheme =
+    choose_parameter(get_parameter(np, internal_np::subdivision_scheme), Subdivision_scheme::LINEAR);
   using Mesh = CGAL::Surface_mesh<Point>;
   using Target = typename boost::property_traits<TargetMap>::value_type;
   constexpr int ds = internal::point_dimension<Point>(), dt = internal::point_dimension<Target>();

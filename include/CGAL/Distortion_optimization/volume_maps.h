@@ -147,7 +147,7 @@ Eigen::Matrix3d whitening(const C3T3& c3t3, double scale, const Point_3& center)
 /// The average of the vertices would follow the mesh's sampling instead of the volume.
 /// \throws Invalid_input if the complex has no cell of positive volume
 template <class C3T3>
-internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
+typename C3T3::Triangulation::Geom_traits::Point_3 volume_centroid(const C3T3& c3t3)
 {
   using Point_3 = internal::C3t3_point<C3T3>;
   const auto& tr = c3t3.triangulation();
@@ -179,7 +179,7 @@ internal::C3t3_point<C3T3> volume_centroid(const C3T3& c3t3)
 /// whose size is the square of the domain's, is beyond double precision (a domain larger than
 /// \f$ 2^{500} \f$ or smaller than \f$ 2^{-500} \f$ about `center`). `target` is then unchanged.
 template <class C3T3, class TargetMap>
-void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
+void radial_map(const C3T3& c3t3, TargetMap target, const typename C3T3::Triangulation::Geom_traits::Point_3& center)
 {
   using Point_3 = internal::C3t3_point<C3T3>;
   if(!internal::is_strictly_inside(c3t3, center))
@@ -228,7 +228,8 @@ void radial_map(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C
 /// untangling a map built otherwise, e.g. the radial map, are the remedies). `target` is then
 /// unchanged.
 template <class C3T3, class TargetMap>
-std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target, const internal::C3t3_point<C3T3>& center)
+std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target,
+                                     const typename C3T3::Triangulation::Geom_traits::Point_3& center)
 {
   using Point_3 = internal::C3t3_point<C3T3>;
   using K = typename Kernel_traits<Point_3>::Kernel;
