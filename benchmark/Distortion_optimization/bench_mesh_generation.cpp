@@ -237,7 +237,7 @@ void volume(int k)
           tets.push_back(t);
         }
   Volume source;
-  DO::c3t3_from_tetrahedra(points, tets, source);
+  DO::c3t3_from_tetrahedra(source, points, tets);
   const auto boundary = boundary_vertices(source);
 
   Surface target_boundary;   // the image of the cube's boundary: the domain the other meshers get
@@ -310,7 +310,7 @@ void volume(int k)
   DO::tetrahedralize_with_tetgen(surface_points, triangles, max_volume, tet_points, tet_cells);
   const double seconds = seconds_since(start);
   Volume tetgen;
-  DO::c3t3_from_tetrahedra(tet_points, tet_cells, tetgen);
+  DO::c3t3_from_tetrahedra(tetgen, tet_points, tet_cells);
   Targets positions;
   DO::map_vertices(tetgen, Target_map(positions), [](const Point& p) { return p; });
   std::vector<Point> pts;

@@ -112,7 +112,7 @@ int main(int argc, char** argv)
         if(run.schedule != DO::Schedule::ALTERNATING && sizes[s] > 60000) continue;   // minutes: see the 50K rows
         if(sizes[s] > 500000 && run.sweep == parts) continue;
         C3t3 c3t3;
-        DO::c3t3_from_tetrahedra(points, tets, c3t3);
+        DO::c3t3_from_tetrahedra(c3t3, points, tets);
         Storage storage;
         DO::map_vertices(c3t3, Target(storage), radial);
         Row& row = rows[i];
@@ -148,7 +148,7 @@ int main(int argc, char** argv)
     std::vector<std::array<std::size_t, 4>> tets;
     cube_of_about(50000, points, tets);
     C3t3 c3t3;
-    DO::c3t3_from_tetrahedra(points, tets, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, points, tets);
     Storage storage;
     DO::map_vertices(c3t3, Target(storage), radial);
     const DO::Result r = CGAL::minimize_distortion(c3t3, Target(storage), DO::Conformal_dilatation(),
@@ -190,7 +190,7 @@ int main(int argc, char** argv)
     std::vector<std::array<std::size_t, 4>> tets;
     cube_of_about(count, points, tets);
     C3t3 c3t3;
-    DO::c3t3_from_tetrahedra(points, tets, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, points, tets);
     const auto nothing_fixed = boost::make_function_property_map<Tr::Vertex_handle>([](Tr::Vertex_handle) { return false; });
     auto run = [&](const auto& measure) {
       const DO::Global_solver solvers[] = {DO::Global_solver::REWEIGHTED_LAPLACIAN, DO::Global_solver::PROJECTED_NEWTON};

@@ -69,7 +69,7 @@ inline C3t3 cube_complex(int n, const std::function<bool(int, int, int)>& keep =
         }
       }
   C3t3 c3t3;
-  CGAL::Distortion_optimization::c3t3_from_tetrahedra(points, tets, c3t3);
+  CGAL::Distortion_optimization::c3t3_from_tetrahedra(c3t3, points, tets);
   return c3t3;
 }
 

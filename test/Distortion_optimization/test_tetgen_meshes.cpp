@@ -50,7 +50,7 @@ static C3t3 tetgen_cube_complex(double max_volume)
   std::vector<std::array<std::size_t, 4>> tets;
   tetgen_cube(max_volume, points, tets);
   C3t3 c3t3;
-  DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  DO::c3t3_from_tetrahedra(c3t3, points, tets);
   return c3t3;
 }
 
@@ -99,7 +99,7 @@ TEST(TetrahedralMeshes, TetrahedraFromC3t3IsTheConverseOfC3t3FromTetrahedra)
   std::vector<std::array<std::size_t, 4>> tets;
   tetgen_cube(0.05, points, tets);
   C3t3 c3t3;
-  const auto handles = DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  const auto handles = DO::c3t3_from_tetrahedra(c3t3, points, tets);
   std::unordered_map<Vertex_handle, std::size_t> input_index;
   for(std::size_t i = 0; i < handles.size(); ++i)
     if(handles[i] != Vertex_handle()) input_index[handles[i]] = i;
@@ -167,7 +167,7 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   EXPECT_NEAR(volume, 8., 1e-9);
 
   C3t3 c3t3;
-  const auto handles = DO::c3t3_from_tetrahedra(points, tets, c3t3);
+  const auto handles = DO::c3t3_from_tetrahedra(c3t3, points, tets);
   ASSERT_EQ(c3t3.number_of_cells_in_complex(), tets.size());
   // A ball: with its infinite cells on the boundary facets, the data structure is a valid
   // triangulated 3-sphere (neighbours, vertex cells, orientation, Euler characteristic).
@@ -394,7 +394,7 @@ TEST(TetrahedralMeshes, HugeCoordinatesGiveTheScaledMap)
   tetgen_cube(0.05, points, tets);
   for(const auto& p : points) scaled.push_back({1e110 * p[0], 1e110 * p[1], 1e110 * p[2]});
   C3t3 unit, huge;
-  const auto a = DO::c3t3_from_tetrahedra(points, tets, unit), b = DO::c3t3_from_tetrahedra(scaled, tets, huge);
+  const auto a = DO::c3t3_from_tetrahedra(unit, points, tets), b = DO::c3t3_from_tetrahedra(huge, scaled, tets);
   Target_storage x, y;
   for(std::size_t i = 0; i < points.size(); ++i) {
     const Point_3 p = radial(Point_3(points[i][0], points[i][1], points[i][2]));

@@ -154,9 +154,9 @@ TEST(TetrahedralMeshes, ComplexFromTetrahedraIsTheSameOnAnyNumberOfThreads)
     std::vector<std::vector<std::array<std::size_t, 4>>> tetrahedra;
     for(int threads : {1, 2, 3}) {
       C3t3 c3t3;
-      DO::c3t3_from_tetrahedra(block.points, {block.cells[0]}, c3t3);   // replaced, or kept on a refusal
+      DO::c3t3_from_tetrahedra(c3t3, block.points, {block.cells[0]});   // replaced, or kept on a refusal
       try {
-        const auto handles = DO::c3t3_from_tetrahedra(block.points, cells, c3t3, 1, DO::parameters::number_of_threads(threads));
+        const auto handles = DO::c3t3_from_tetrahedra(c3t3, block.points, cells, DO::parameters::number_of_threads(threads));
         messages.push_back("");
         EXPECT_TRUE(c3t3.triangulation().tds().is_valid()) << trial;
         EXPECT_TRUE(c3t3.triangulation().is_valid()) << trial;
@@ -188,7 +188,7 @@ TEST(TetrahedralMeshes, ComplexFromTetrahedraIsTheSameOnAnyNumberOfThreads)
   for(int threads : {1, 2}) {
     C3t3 c3t3;
     try {
-      DO::c3t3_from_tetrahedra(fan, {{0, 1, 2, 3}, {2, 1, 0, 4}}, c3t3, 1, DO::parameters::number_of_threads(threads));
+      DO::c3t3_from_tetrahedra(c3t3, fan, {{0, 1, 2, 3}, {2, 1, 0, 4}}, DO::parameters::number_of_threads(threads));
       ADD_FAILURE() << "a folded pair of tetrahedra was accepted on " << threads << " threads";
     } catch(const DO::Invalid_input& e) {
       EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 1 lie on the same side of their common facet"), std::string::npos) << e.what();
@@ -203,7 +203,7 @@ TEST(TetrahedralMeshes, AdapterNamesTheFirstNonFiniteTarget)
 {
   const DO::IO::Tetrahedron_soup block = kuhn_block(3);
   C3t3 c3t3;
-  const auto handles = DO::c3t3_from_tetrahedra(block.points, block.cells, c3t3);
+  const auto handles = DO::c3t3_from_tetrahedra(c3t3, block.points, block.cells);
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> tets;
   const auto order = DO::tetrahedra_from_c3t3(c3t3, points, tets);
@@ -231,12 +231,12 @@ TEST(TetrahedralMeshes, BadInput)
   std::vector<std::array<double, 3>> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}};
   C3t3 c3t3;
   try {
-    DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 3}}, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, points, {{0, 1, 2, 3}});
     ADD_FAILURE() << "a flat tetrahedron was accepted";
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedron 0 is flat"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 7}}, c3t3), DO::Invalid_input);
+  EXPECT_THROW(DO::c3t3_from_tetrahedra(c3t3, points, {{0, 1, 2, 7}}), DO::Invalid_input);
 
   // Complexes that are not manifold, each named with its cells: a tetrahedron listed twice (in
   // another vertex order), two that meet only at an edge, two that meet only at a vertex.
@@ -248,7 +248,7 @@ TEST(TetrahedralMeshes, BadInput)
     {{{0, 1, 2, 3}, {0, 4, 5, 6}}, "tetrahedra 0 and 1 meet only at vertex 0"}};
   for(const auto& [tets, message] : bad) {
     try {
-      DO::c3t3_from_tetrahedra(star, tets, c3t3);
+      DO::c3t3_from_tetrahedra(c3t3, star, tets);
       ADD_FAILURE() << "accepted: " << message;
     } catch(const DO::Invalid_input& e) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
@@ -258,14 +258,14 @@ TEST(TetrahedralMeshes, BadInput)
   std::vector<std::array<double, 3>> fan = star;
   fan.push_back({0.2, 0.2, 1});
   try {
-    DO::c3t3_from_tetrahedra(fan, {{0, 1, 2, 3}, {0, 2, 1, 6}, {2, 1, 0, 7}}, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, fan, {{0, 1, 2, 3}, {0, 2, 1, 6}, {2, 1, 0, 7}});
     ADD_FAILURE() << "three tetrahedra on one facet were accepted";
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedra 0, 1 and 2 share the facet (0, 1, 2)"), std::string::npos) << e.what();
   }
   // Two tetrahedra above the same facet (a fold): each is positive, but they overlap.
   try {
-    DO::c3t3_from_tetrahedra(fan, {{0, 1, 2, 3}, {2, 1, 0, 7}}, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, fan, {{0, 1, 2, 3}, {2, 1, 0, 7}});
     ADD_FAILURE() << "a folded pair of tetrahedra was accepted";
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 1 lie on the same side of their common facet"), std::string::npos) << e.what();
@@ -275,13 +275,13 @@ TEST(TetrahedralMeshes, BadInput)
   // four inside it.
   const std::vector<std::array<double, 3>> five = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3, 0.3, 0.3}};
   try {
-    DO::c3t3_from_tetrahedra(five, {{1, 2, 3, 4}, {0, 2, 3, 4}, {0, 1, 3, 4}, {0, 1, 2, 4}, {0, 1, 2, 3}}, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, five, {{1, 2, 3, 4}, {0, 2, 3, 4}, {0, 1, 3, 4}, {0, 1, 2, 4}, {0, 1, 2, 3}});
     ADD_FAILURE() << "a complex without boundary was accepted";
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 4 lie on the same side of their common facet"), std::string::npos) << e.what();
   }
   // Two tetrahedra sharing a facet are a manifold complex; the points in neither get no vertex.
-  const auto pair = DO::c3t3_from_tetrahedra(star, {{0, 1, 2, 3}, {0, 2, 1, 6}}, c3t3);
+  const auto pair = DO::c3t3_from_tetrahedra(c3t3, star, {{0, 1, 2, 3}, {0, 2, 1, 6}});
   ASSERT_EQ(pair.size(), star.size());
   EXPECT_EQ(pair[4], Vertex_handle());
   EXPECT_EQ(pair[5], Vertex_handle());
@@ -292,7 +292,7 @@ TEST(TetrahedralMeshes, BadInput)
   EXPECT_TRUE(first->neighbor(first->index(pair[3]))->has_vertex(pair[6]));
 
   // An inverted start under a normalized measure names the cell and writes nothing.
-  const auto handles = DO::c3t3_from_tetrahedra(points, {{0, 1, 2, 4}, {1, 3, 2, 4}}, c3t3);
+  const auto handles = DO::c3t3_from_tetrahedra(c3t3, points, {{0, 1, 2, 4}, {1, 3, 2, 4}});
   Target_storage storage;
   for(std::size_t i = 0; i < points.size(); ++i) storage[handles[i]] = Point_3(points[i][0], points[i][1], points[i][2]);
   storage[handles[4]] = Point_3(0.2, 0.2, -1);   // below the base: both tetrahedra inverted

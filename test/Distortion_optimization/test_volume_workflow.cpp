@@ -1005,7 +1005,7 @@ TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)
   // 2^600 or 2^-600 in size instead of writing infinities or zeros.
   const auto tetrahedron = [](double size, C3t3& c3t3) {
     const std::vector<std::array<double, 3>> points = {{-size, -size, -size}, {size, -size, -size}, {-size, size, -size}, {-size, -size, size}};
-    DO::c3t3_from_tetrahedra(points, std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}}, c3t3);
+    DO::c3t3_from_tetrahedra(c3t3, points, std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}});
   };
   C3t3 unit, huge;
   tetrahedron(1, unit);
@@ -1079,7 +1079,7 @@ TEST(VolumeWorkflow, BallMapOfALinearImageIsTheSameUpToARotation)
   for(auto& p : squeezed.points) p[0] /= 4;   // exactly
   const auto& points = squeezed.points;
   C3t3 cube;
-  const std::vector<Vertex_handle> handles = DO::c3t3_from_tetrahedra(points, squeezed.cells, cube);
+  const std::vector<Vertex_handle> handles = DO::c3t3_from_tetrahedra(cube, points, squeezed.cells);
   Targets a, b;
   DO::star_shaped_to_unit_ball(long_box, Target_map(a), DO::volume_centroid(long_box));
   DO::star_shaped_to_unit_ball(cube, Target_map(b), DO::volume_centroid(cube));
@@ -1130,7 +1130,7 @@ TEST(VolumeWorkflow, BallMapFindsTheExitOfRaysThroughBoundaryVertices)
   ASSERT_TRUE(CGAL::IO::read_OFF(off, cube));
   const Tetrahedra meshed = tetrahedra_of(DO::mesh_interior(cube, DOP::cell_size(0.1)));
   C3t3 c3t3;
-  DO::c3t3_from_tetrahedra(meshed.points, meshed.cells, c3t3);
+  DO::c3t3_from_tetrahedra(c3t3, meshed.points, meshed.cells);
   Targets ball;
   ASSERT_NO_THROW(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)));
   // Every boundary vertex on the unit sphere, every other one inside.

@@ -1,28 +1,12 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// distortion_optimizer: the command-line tool of the package (README.md, the manual's "Command-Line
-// Tool"). This file: the outputs staged all or none, and the exit status; the modes are in
-// triangle_maps.cpp and tetrahedral_maps.cpp, the command line in command_line.cpp.
-//
-//   distortion_optimizer --source S --target T --output O [--measure NAME] [--fix boundary|none|FILE]
-//                        [--iterations N] [--threshold EPS] [--solver gd|bfgs] [--threads N] [--report R.json]
-//                        [--schedule alternating|local|global] [--untangle] [--quiet|--verbose]
-//                        [--time-limit SECONDS]
-//   distortion_optimizer --source CLOSED --start ball|radial --output O.mesh [--mesh-output M.mesh]
-//                        [--cell-size H] [--center X,Y,Z] [--boundary slide|fixed]
-//                        [--carry INNER --carry-output C [--snap]] [options above]
-//
-// S, T, O: OFF or OBJ triangle meshes, or Medit .mesh tetrahedral meshes, with the same vertices
-// and cells in the same order; a planar target has z = 0. Without --target, a disk-topology
-// triangle source gets a Tutte start (circle border). O may also be .vtu: the optimized map with
-// each cell's distortion, for ParaView.
-// Volume mode (--start): the inside of a closed surface is meshed with Mesh_3 (or a .mesh source
-// is taken as it is), mapped onto the unit ball or by x |x|, untangled where that start flattens
-// cells, and optimized with the boundary sliding on the start's boundary surface or fixed; a
-// surface inside the volume may be carried through the map (paper 4.4).
-// Energies are volume-weighted means sum vol(c) D(J_c) / sum vol(c).
-// Exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command line.
+// distortion_optimizer: the command-line tool of the package; `--help` and the manual's section
+// "The Command-Line Tool" give its usage. This file stages the outputs (all written or none) and
+// decides the exit status: 0 on success, 1 for bad input (one-line message), 2 for a bad command
+// line. The command line is read in command_line.cpp, triangle maps run in triangle_maps.cpp,
+// tetrahedral maps in tetrahedral_maps.cpp (with the volume mode's meshing and carried surface in
+// volume_mode.cpp), and the report and pictures are written by outputs.cpp.
 
 #include "staged_output.h"
 #include "tool.h"

@@ -62,7 +62,7 @@ int run_tetrahedra(const Command_line& c)
   C3t3 c3t3;
   std::vector<Tr::Vertex_handle> handles;
   try {
-    handles = DO::c3t3_from_tetrahedra(source.points, source.cells, c3t3, 1, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
+    handles = DO::c3t3_from_tetrahedra(c3t3, source.points, source.cells, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
   } catch(const DO::Invalid_input& e) {
     // The source's tetrahedra are the complex's: they must be valid, even where the map is
     // untangled (--untangle repairs the target; with --reference ideal the target is S itself).

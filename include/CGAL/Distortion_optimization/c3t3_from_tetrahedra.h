@@ -359,13 +359,27 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
 
 } // namespace internal
 
+namespace internal_np {
+enum subdomain_index_t { subdomain_index };
+} // namespace internal_np
+
+namespace parameters {
+/// `int`: the subdomain (> 0) of the tetrahedra that `c3t3_from_tetrahedra()` puts in the complex; default 1.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(subdomain_index_t, subdomain_index)
+} // namespace parameters
+
 /// \ingroup PkgDistortionOptimizationRef
 /// Replaces the content of `c3t3` (a `CGAL::Mesh_complex_3_in_triangulation_3`) with the given
-/// tetrahedra, all in subdomain `label` (> 0), vertex `i` at `points[i]`: the way to hand a mesh
+/// tetrahedra, all in one subdomain, vertex `i` at `points[i]`: the way to hand a mesh
 /// from TetGen or a Medit file to `CGAL::minimize_distortion()`. Negatively oriented tetrahedra
 /// are stored with two vertices swapped (a simplicial map does not depend on the vertex order).
 ///
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{subdomain_index}
+///     \cgalParamDescription{the subdomain of the tetrahedra (`Distortion_optimization::parameters::subdomain_index()`)}
+///     \cgalParamType{`int`, positive}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{threads for the orientation, manifold and fold checks, beside which the
 ///                           complex is then built; `0` for all the hardware offers
@@ -385,12 +399,13 @@ std::vector<typename Tr::Vertex_handle> build_triangulation(Tr& tr, const std::v
 /// of threads. `c3t3` is then unchanged.
 template <class C3T3, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename C3T3::Triangulation::Vertex_handle>
-c3t3_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
-                     const std::vector<std::array<std::size_t, 4>>& tetrahedra, C3T3& c3t3, int label = 1,
+c3t3_from_tetrahedra(C3T3& c3t3, const std::vector<std::array<double, 3>>& points,
+                     const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
   using Tr = typename C3T3::Triangulation;
   using Bare_point = typename Tr::Geom_traits::Point_3;
+  const int label = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::subdomain_index), 1);
   if(points.empty() || tetrahedra.empty()) throw Invalid_input("no tetrahedron");
   if(label <= 0) throw Invalid_input("the subdomain label must be positive");
   const int threads = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 1);

@@ -94,7 +94,7 @@ int main()
     tetrahedra.push_back({q[0], q[2], q[3], 8});
   }
   C3t3 c3t3;
-  const auto handles = CGAL::Distortion_optimization::c3t3_from_tetrahedra(points, tetrahedra, c3t3);
+  const auto handles = CGAL::Distortion_optimization::c3t3_from_tetrahedra(c3t3, points, tetrahedra);
   std::unordered_map<Tr::Vertex_handle, Point_3> positions;
   for(std::size_t i = 0; i < points.size(); ++i) positions[handles[i]] = Point_3(points[i][0], points[i][1], points[i][2]);
   positions[handles[8]] = Point_3(0.65, 0.4, 0.55);

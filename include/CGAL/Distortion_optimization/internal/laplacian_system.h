@@ -8,7 +8,9 @@
 // tetrahedra alike; the global step reweights it per cell. This module builds its sparsity
 // pattern once, refills its values, and solves with it by conjugate gradients, on all threads and
 // with results that do not depend on their number. Users: the harmonic map (harmonic_targets
-// below: the public harmonic_map() and the optimizer's harmonic start) and the global step.
+// below: the public harmonic_map() and the optimizer's harmonic start) and the global step. On
+// the same vertex pattern it also assembles the global step's Newton system from the cells'
+// Hessians (refill_hessian), n x n blocks per pair of vertices.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_LAPLACIAN_SYSTEM_H
