@@ -37,8 +37,10 @@
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cell_hessian.h>
+#include <CGAL/Distortion_optimization/internal/block_amd_ordering.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 #include <CGAL/Distortion_optimization/internal/newton_model.h>
+#include <CGAL/Distortion_optimization/internal/step_bound.h>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
@@ -57,74 +59,6 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
-
-// The smallest root in (0, bound] of c0 + c1 t + c2 t^2 + c3 t^3 when c0 > 0 (bound if none): the
-// first t at which a cell's signed volume reaches 0. Most cells are cleared at once by a lower
-// bound of the polynomial on [0, bound]; roots are bracketed between the critical points and
-// refined by bisection, which is robust to the cancellations of closed formulas.
-inline double first_positive_root(double c0, double c1, double c2, double c3, double bound)
-{
-  if(c0 + std::min(c1, 0.) * bound + std::min(c2, 0.) * bound * bound + std::min(c3, 0.) * bound * bound * bound > 0)
-    return bound;
-  auto p = [&](double t) { return c0 + t * (c1 + t * (c2 + t * c3)); };
-  // Critical points (roots of c1 + 2 c2 t + 3 c3 t^2), then the bound.
-  std::array<double, 3> stops;
-  std::size_t count = 0;
-  const double a = 3 * c3, b = 2 * c2, c = c1;
-  if(a != 0) {
-    const double disc = b * b - 4 * a * c;
-    if(disc >= 0) {
-      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-      if(q != 0) stops[count++] = c / q;
-      stops[count++] = q / a;
-    }
-  } else if(b != 0) {
-    stops[count++] = -c / b;
-  }
-  std::sort(stops.begin(), stops.begin() + count);
-  stops[count++] = bound;
-  double left = 0;
-  for(std::size_t i = 0; i < count; ++i) {
-    const double s = std::min(stops[i], bound);
-    if(!(s > left)) continue;
-    if(p(s) <= 0) {
-      // Bisection to 1e-12 relative: callers take a fraction of the root anyway.
-      double lo = left, hi = s;
-      for(int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        (p(mid) > 0 ? lo : hi) = mid;
-      }
-      return lo;   // the side where the volume is still positive
-    }
-    left = s;
-  }
-  return bound;
-}
-
-// The fill-reducing ordering of a matrix of n x n blocks (the Newton system, n unknowns per
-// vertex): Eigen's approximate minimum degree on the graph of the blocks, each block's unknowns
-// kept together. An n times smaller graph is ordered about n^2 times faster, with less fill.
-template <int n>
-struct Block_AMD_ordering
-{
-  template <class MatrixType>
-  void operator()(const MatrixType& A, Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& permutation) const
-  {
-    const int blocks = static_cast<int>(A.rows()) / n;
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(static_cast<std::size_t>(A.nonZeros()) / (n * n) + 1);
-    for(int j = 0; j < blocks; ++j)
-      for(typename MatrixType::InnerIterator it(A, n * j); it; ++it)
-        if(it.index() % n == 0) entries.emplace_back(static_cast<int>(it.index()) / n, j, 1.);
-    Eigen::SparseMatrix<double> graph(blocks, blocks);
-    graph.setFromTriplets(entries.begin(), entries.end());
-    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> block_permutation;
-    Eigen::AMDOrdering<int>()(graph, block_permutation);
-    permutation.resize(n * blocks);
-    for(int i = 0; i < blocks; ++i)
-      for(int a = 0; a < n; ++a) permutation.indices()[n * i + a] = n * block_permutation.indices()[i] + a;
-  }
-};
 
 // An attempt that may fail, retried less often after failures: after k in a row, the next
 // 2^(k-1) occasions (at most 2^16) skip it.
@@ -504,26 +438,10 @@ private:
       for(std::size_t i = 0; i < count; ++i) factor[i] = measures_internal::laplacian_weight<n>(state_.measure(), sigma[i]);
   }
 
-  // The exact largest t <= bound such that no valid cell degenerates at X + t D.
+  // The exact largest t <= bound such that no valid cell degenerates at X + t D (step_bound.h).
   double max_step(const std::vector<Vec>& direction, double bound) const
   {
-    const std::vector<std::uint32_t>& moving = system_.moving_cells();
-    if(!state_.keeps_valid_cells()) return bound;
-    const auto cell_bound = [&](std::size_t i) {
-      const std::uint32_t c = moving[i];
-      if(!state_.is_valid(c)) return bound;
-      const auto& cell = p_.map.cells[c];
-      Matrix<n> A = p_.map.target_edges(c), B;
-      for(int k = 0; k < n; ++k) B.col(k) = direction[cell[k + 1]] - direction[cell[0]];
-      const double sign = p_.map.rest_sign[c];
-      const Cofactor_and_determinant<n> a(A), b(B);
-      const double c0 = sign * a.det, c1 = sign * (a.cofactor.array() * B.array()).sum();
-      double c2, c3 = 0;
-      if constexpr(n == 2) c2 = sign * b.det;
-      else { c2 = sign * (b.cofactor.array() * A.array()).sum(); c3 = sign * b.det; }
-      return c0 > 0 ? first_positive_root(c0, c1, c2, c3, bound) : bound;
-    };
-    return state_.workers().reduce(moving.size(), bound, cell_bound, [](double a, double b) { return std::min(a, b); });
+    return largest_safe_step(state_, system_.moving_cells(), direction, bound);
   }
 
   // Backtracks from t along D until the energy decreases (Armijo with the given slope, or any
