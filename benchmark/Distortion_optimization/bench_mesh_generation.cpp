@@ -150,9 +150,8 @@ void planar(int k)
     // The inside at the identity: the optimizer's harmonic start takes it from there.
     for(auto u : source.vertices()) uv[u] = source.is_border(u) ? radial(source.point(u)) : source.point(u);
     const auto start = std::chrono::steady_clock::now();
-    DO::with_measure(measure, [&](const auto& m) {
-      return CGAL::minimize_distortion(source, uv, m, DOP::convergence_threshold(1e-6, CGAL::parameters::number_of_iterations(300)));
-    });
+    CGAL::minimize_distortion(source, uv, DO::measure_from_name(measure),
+                              DOP::convergence_threshold(1e-6, CGAL::parameters::number_of_iterations(300)));
     const double seconds = seconds_since(start);
     std::vector<Point_2> points;
     std::vector<std::array<std::size_t, 3>> cells;
@@ -246,9 +245,8 @@ void volume(int k)
     DO::map_vertices(source, Target_map(map), [](const Point& p) { return p; });
     for(Vertex_handle u : boundary) map[u] = radial(map[u]);   // the inside at the identity, as in 2D
     const auto start = std::chrono::steady_clock::now();
-    DO::with_measure(measure, [&](const auto& m) {
-      return CGAL::minimize_distortion(source, Target_map(map), m, DOP::convergence_threshold(1e-6, CGAL::parameters::number_of_iterations(300)));
-    });
+    CGAL::minimize_distortion(source, Target_map(map), DO::measure_from_name(measure),
+                              DOP::convergence_threshold(1e-6, CGAL::parameters::number_of_iterations(300)));
     const double seconds = seconds_since(start);
     const Soup image(source, map);
     print(("ours, " + measure).c_str(), image.cells.size(), mean_aspect(source, Target_map(map)),
