@@ -11,7 +11,7 @@
 //
 //   build/benchmark/Distortion_optimization/bench_mesh_generation [k, default 12: k x k squares, k^3 cubes]
 
-#include "../../examples/Distortion_optimization/volume_examples.h"
+#include "bench_helpers.h"
 
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>

@@ -16,7 +16,7 @@
 //   build/benchmark/Distortion_optimization/bench_quality [repeats, default 3 [closed_surface.off ...]]
 //   (default surfaces: blobby.off of libcgal-demo, and the cube)
 
-#include "../../examples/Distortion_optimization/volume_examples.h"
+#include "bench_helpers.h"
 
 #include <CGAL/Distortion_optimization/mesh_quality.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>

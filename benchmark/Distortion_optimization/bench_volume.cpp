@@ -20,7 +20,7 @@
 //
 //   build/benchmark/Distortion_optimization/bench_volume [repeats, default 3 [closed_surface.off]]
 
-#include "../../examples/Distortion_optimization/volume_examples.h"
+#include "bench_helpers.h"
 
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>

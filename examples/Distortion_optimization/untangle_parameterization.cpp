@@ -24,7 +24,9 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -43,38 +45,35 @@ int main(int argc, char** argv)
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(path, mesh) || !CGAL::is_triangle_mesh(mesh)) {
     std::cerr << path << ": not a triangle mesh\n";
-    return 1;
+    return EXIT_FAILURE;
   }
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:uv").first;
   const SMP::Error_code status =
     SMP::parameterize(mesh, SMP::ARAP_parameterizer_3<Mesh>(), CGAL::Polygon_mesh_processing::longest_border(mesh).first, uv);
   if(status != SMP::OK) {
     std::cerr << path << ": ARAP failed: " << SMP::get_error_message(status) << "\n";
-    return 1;
+    return EXIT_FAILURE;
   }
 
-  // The surface with its UVs, and a picture of the map's distortion.
+  // The surface with its UVs (OBJ), and a picture of the map, each triangle coloured by its distortion.
   auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
   const DO::Symmetric_dirichlet measure;
   const auto write = [&](const std::string& name) {
     const DO::Distortion_statistics s = CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
     DO::IO::Triangle_soup soup;
-    std::vector<double> values;
+    std::vector<std::array<double, 3>> flat;   // the map in the plane, for the picture
     for(Vertex v : mesh.vertices()) {
       soup.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
       soup.texture_coordinates.push_back({uv[v].x(), uv[v].y()});
+      flat.push_back({uv[v].x(), uv[v].y(), 0});
     }
-    std::vector<std::array<double, 3>> flat;
-    for(Vertex v : mesh.vertices()) flat.push_back({uv[v].x(), uv[v].y(), 0});
     for(auto f : mesh.faces()) {
-      std::array<std::size_t, 3> t;
-      int i = 0;
-      for(Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[i++] = std::size_t(v);
-      soup.cells.push_back(t);
-      values.push_back(per_face[f]);
+      const auto h = mesh.halfedge(f);
+      soup.cells.push_back({mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))});
     }
     soup.cell_texture_indices = soup.cells;
     DO::IO::write_triangle_soup(prefix + "_" + name + ".obj", soup);
+    const std::vector<double> values(per_face.begin(), per_face.end());
     DO::IO::write_SVG(prefix + "_" + name + ".svg", {DO::IO::triangle_panel(name, flat, soup.cells, values)}, measure.name());
     return s;
   };
@@ -93,5 +92,9 @@ int main(int argc, char** argv)
               optimized.mean_volume, r.iterations, r.seconds);
   std::printf("wrote %s_arap.obj, %s_arap.svg, %s_optimized.obj, %s_optimized.svg\n", prefix.c_str(), prefix.c_str(),
               prefix.c_str(), prefix.c_str());
-  return optimized.inverted_cells == 0 ? 0 : 1;
+  if(r.inverted_cells > 0 || !(r.final_energy < r.initial_energy)) {
+    std::cerr << "Error: inverted triangles left, or no lower energy after the untangling" << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
 }

@@ -58,6 +58,7 @@ Distortion_statistics evaluate_adapted(const Adapter& adapter, const Measure& me
 
 /*!
 \ingroup PkgDistortionOptimizationRef
+\anchor compute_distortion_triangle_mesh
 
 Measures the distortion of the simplicial map that sends each vertex `v` of the triangle mesh
 `tm` from its source position to `get(target, v)`.
@@ -162,7 +163,12 @@ compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measur
 
 Measures the distortion of the simplicial map that sends each vertex `v` of the cells of the
 complex `c3t3` (only the cells in the complex) from its position in the triangulation to
-`get(target, v)`; as the triangle-mesh overload, with `n = 3`.
+`get(target, v)`.
+
+Same as the overload for triangle meshes, see
+<code>\ref compute_distortion_triangle_mesh "compute_distortion()"</code>, for tetrahedra
+(`n = 3`), and only what differs is documented here. The target is a `Point_3` in space: unlike
+a `Point_3` target of a triangle mesh, it keeps an orientation, and inverted cells are counted.
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
 \tparam TargetMap a model of `ReadablePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`
@@ -172,41 +178,15 @@ complex `c3t3` (only the cells in the complex) from its position in the triangul
 \param c3t3 the source complex; it is not modified
 \param target the image of each vertex of the cells of the complex
 \param measure the distortion measure
-\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
-       ones listed below; `vertex_point_map` is not used (positions come from the triangulation)
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters": those of
+       the overload for triangle meshes but `vertex_point_map` (positions come from the
+       triangulation), with `C3T3::Triangulation::Vertex_handle` as the key type of
+       `vertex_weight_map` (the vertices of the cells of `c3t3`) and
+       `C3T3::Triangulation::Cell_handle` as the key type of `cell_distortion_map` and
+       `inverted_cell_map` (the cells of the complex); what differs further is listed below
 
 \cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_weight_map}
-    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of the cells of `c3t3`
-                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
-                   as key type and a number type convertible to `double` as value type}
-    \cgalParamDefault{omega(v) = 1 for every vertex}
-    \cgalParamExtra{Every weight must be finite and positive.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{cell_distortion_map}
-    \cgalParamDescription{a property map that receives the distortion D(J_c) of each cell of the complex
-                          (`Distortion_optimization::parameters::cell_distortion_map()`)}
-    \cgalParamType{a class model of `WritablePropertyMap` with `C3T3::Triangulation::Cell_handle`
-                   as key type and `double` as value type}
-    \cgalParamDefault{unused: no per-cell value is written}
-    \cgalParamExtra{Written only when the function returns normally.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{inverted_cell_map}
-    \cgalParamDescription{a property map that receives, for each cell of the complex, whether the map inverts or
-                          flattens it: the cells counted in `inverted_cells`
-                          (`Distortion_optimization::parameters::inverted_cell_map()`)}
-    \cgalParamType{a class model of `WritablePropertyMap` with `C3T3::Triangulation::Cell_handle`
-                   as key type and `bool` as value type}
-    \cgalParamDefault{unused}
-    \cgalParamExtra{Written only when the function returns normally.}
-  \cgalParamNEnd
-
   \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
     \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
                       triangulation's points}
     \cgalParamExtra{Its `Orientation_3` decides, on `double` coordinates, whether each source tetrahedron is positive

@@ -21,6 +21,7 @@
 namespace CGAL {
 /*!
 \ingroup PkgDistortionOptimizationRef
+\anchor minimize_distortion_triangle_mesh
 
 Minimizes the distortion of the simplicial map that sends each vertex `v` of the triangle mesh
 `tm` from its source position to `get(target, v)`, moving the free vertices' targets:
@@ -236,9 +237,11 @@ complex `c3t3` from its position to `get(target, v)`, moving the free vertices' 
 cells in the complex count; the triangulation's other cells are ignored, and only vertices of
 complex cells are read or written.
 
-Same method, guarantees and result as the triangle-mesh overload (`n = 3`): no tetrahedron that is
-positive in the start map is ever inverted or flattened (exact predicates). The source positions
-are the points of the triangulation.
+Same as the overload for triangle meshes, see
+<code>\ref minimize_distortion_triangle_mesh "minimize_distortion()"</code>, for tetrahedra
+(`n = 3`): the method, its guarantees and the result are the same, and only what differs is
+documented here. No tetrahedron that is positive in the start map is ever inverted or flattened
+(exact predicates). The source positions are the points of the triangulation.
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
 \tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a
@@ -250,166 +253,41 @@ are the points of the triangulation.
 \param target the start map on input, the optimized map on output; written only on success, and
        only for free complex vertices
 \param measure the distortion measure D
-\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
-       ones listed below; `vertex_point_map` is not used (positions come from the triangulation)
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters": those of
+       the overload for triangle meshes but `vertex_point_map` (positions come from the
+       triangulation), with `C3T3::Triangulation::Vertex_handle` as the key type of the vertex
+       property maps (`vertex_is_constrained_map`, `vertex_weight_map`), which cover the vertices of
+       the cells of `c3t3`; what differs further is listed below
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_is_constrained_map}
-    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of the cells
-                          of `c3t3`: a constrained vertex keeps its target}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
-                   as key type and `bool` as value type}
     \cgalParamDefault{the vertices on the boundary of the complex (on a facet between a cell of the complex and a
                       cell outside it) are constrained; with `sliding_boundary`, no vertex is}
   \cgalParamNEnd
 
-  \cgalParamNBegin{vertex_weight_map}
-    \cgalParamDescription{a property map associating a weight omega(v) to each vertex of the cells of `c3t3`
-                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
-                   as key type and a number type convertible to `double` as value type}
-    \cgalParamDefault{omega(v) = 1 for every vertex}
-    \cgalParamExtra{Every weight must be finite and positive.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{cell_weighting}
-    \cgalParamDescription{the cell weights w(c, v) of the energy (eq. 23)
-                          (`Distortion_optimization::parameters::cell_weighting()`)}
-    \cgalParamType{`Distortion_optimization::Cell_weighting`}
-    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of iterations}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`100`}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{convergence_threshold}
-    \cgalParamDescription{the run stops when an iteration decreases the energy by less than this fraction
-                          of the energy above the measure's minimum (normalized measures) or of the energy
-                          (other measures) (`Distortion_optimization::parameters::convergence_threshold()`)}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`1e-4`}
-    \cgalParamExtra{It must be non-negative.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{local_solver}
-    \cgalParamDescription{how one vertex's local problem is solved (`Distortion_optimization::parameters::local_solver()`)}
-    \cgalParamType{`Distortion_optimization::Local_solver`: `GRADIENT_DESCENT` or `BFGS`}
-    \cgalParamDefault{`Distortion_optimization::Local_solver::GRADIENT_DESCENT`}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{vertex_order}
-    \cgalParamDescription{the order in which a sweep visits the free vertices
-                          (`Distortion_optimization::parameters::vertex_order()`)}
-    \cgalParamType{`Distortion_optimization::Vertex_order`: `SORTED_PER_SWEEP` or `GREEDY` (the paper's live priority queue)}
-    \cgalParamDefault{`Distortion_optimization::Vertex_order::SORTED_PER_SWEEP`}
-    \cgalParamExtra{With more than one thread the parallel sweeps always use the sorted order:
-                    `GREEDY` applies to the one-thread sweep only.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{schedule}
-    \cgalParamDescription{what an iteration does: `LOCAL` (the paper's sweep), `GLOBAL` (one preconditioned
-                          step of all free vertices) or `ALTERNATING` (both) (`Distortion_optimization::parameters::schedule()`)}
-    \cgalParamType{`Distortion_optimization::Schedule`}
-    \cgalParamDefault{`GLOBAL` where the global steps are projected Newton steps (a measure that has a `hessian()`; on tetrahedral complexes with no vertex constrained or sliding, also `Conformal_dilatation`, `Condition_number` and `Isometric_dilatation`, whose steps are a smooth model's), with a local sweep added to an iteration whose step gains too little to go on or is cut short of its full length; `ALTERNATING` otherwise (the reweighted Laplacian's steps, and a smooth model's with sliding vertices, whose minimizers are not the measure's)}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{use_harmonic_start}
-    \cgalParamDescription{if `true`, the run starts from the harmonic map of the fixed vertices when it is valid
-                          and better, or from the best safe point towards it
-                          (`Distortion_optimization::parameters::use_harmonic_start()`)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`, except with `Distortion_optimization::Schedule::LOCAL`: then `false`}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{untangle_first}
-    \cgalParamDescription{if `true`, a start map with inverted or flat tetrahedra is first untangled as by
-                          `Distortion_optimization::untangle()`, then the measure is minimized from the untangled map
-                          (`Distortion_optimization::parameters::untangle_first()`)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`: under a normalized measure such a start is an error}
-    \cgalParamExtra{The untangling runs at most 1000 rounds (`number_of_iterations` applies to the minimization
-                    only) and reports each round to the visitor. The result reports it in
-                    `inverted_start_cells`, `untangle_iterations` and `untangle_seconds`.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{preserve_global_injectivity}
-    \cgalParamDescription{if `true`, the map is kept globally injective when boundary vertices are free:
-                          a move that would make the target boundary surface cross itself is shortened (exact predicates)
-                          (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-    \cgalParamExtra{The boundary of the start map must not cross itself, nor may a piece of the mesh lie inside another, otherwise
-                    `Distortion_optimization::Crossing_start_boundary` is thrown (only when some free vertex
-                    is on the boundary).}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads of the sweeps and global steps; `0` for all the hardware offers
-                          (`Distortion_optimization::parameters::number_of_threads()`)}
-    \cgalParamType{`int`}
-    \cgalParamDefault{`1`}
-    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
-                    The output is deterministic for a given number of threads. A negative value is an error.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{parallel_sweep}
-    \cgalParamDescription{how local sweeps are shared among threads, with more than one thread
-                          (`Distortion_optimization::parameters::parallel_sweep()`)}
-    \cgalParamType{`Distortion_optimization::Parallel_sweep`: `INDEPENDENT_SETS` or `PARTITION` (the paper's Algorithm 3)}
-    \cgalParamDefault{`Distortion_optimization::Parallel_sweep::INDEPENDENT_SETS`}
-  \cgalParamNEnd
-
   \cgalParamNBegin{global_solver}
-    \cgalParamDescription{the system that gives the direction of a global step
-                          (`Distortion_optimization::parameters::global_solver()`)}
-    \cgalParamType{`Distortion_optimization::Global_solver`: `REWEIGHTED_LAPLACIAN` or `PROJECTED_NEWTON`}
-    \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
-    \cgalParamExtra{Newton steps need a measure with a `hessian()`, otherwise the step is the Laplacian's; with no
-                    vertex constrained or sliding, `Conformal_dilatation` and `Condition_number` take the Newton steps of
-                    `MIPS`, `Isometric_dilatation` those of `Symmetric_dirichlet` (the same minimizers, without the
+    \cgalParamExtra{Besides the measures with a `hessian()`, with no vertex constrained or sliding,
+                    `Conformal_dilatation` and `Condition_number` take the Newton steps of `MIPS`,
+                    `Isometric_dilatation` those of `Symmetric_dirichlet` (the same minimizers, without the
                     kink there); with sliding vertices and none constrained, the model's Hessian is the metric of
                     the measure's own gradient. The line search decides on the measure itself. The Newton
                     system of a complex (3 unknowns per free vertex) fills in too much to factor: it is solved
                     inexactly, by Jacobi-preconditioned conjugate gradients (truncated Newton): 60 iterations at
                     most, up to 960 while 60 leave the residual above half the gradient (not for a model's steps
-                    with nothing sliding, whose preconditioner may change instead).
-                    Sliding vertices take the step restricted to their tangent planes.}
+                    with nothing sliding, whose preconditioner may change instead).}
   \cgalParamNEnd
 
   \cgalParamNBegin{sliding_boundary}
-    \cgalParamDescription{a surface on which the boundary vertices of the complex that are not constrained slide
-                          (`Distortion_optimization::parameters::sliding_boundary()`)}
     \cgalParamType{a model of `SlidingSurface` in space (its `project()` is called with `std::array<double, 3>`),
                    e.g. `Distortion_optimization::Sphere_surface` or `Distortion_optimization::Triangle_surface`}
-    \cgalParamDefault{unused: the boundary vertices are constrained, or, when `vertex_is_constrained_map`
-                      frees them, move freely}
-    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
   \cgalParamNEnd
 
   \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
     \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
                       triangulation's points}
     \cgalParamExtra{Its `Orientation_3` decides, on the coordinates the optimizer uses (`double`), whether each source
                     tetrahedron is positive and whether a target tetrahedron is inverted. Its `Point_3` must be
                     constructible from three `double`s.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{visitor}
-    \cgalParamDescription{a callable called after each iteration (numbered from 1) with the mean energy of the map
-                          of that iteration and, if it takes a third argument, the number of its inverted or flat
-                          cells; returning `false` stops the run with that map}
-    \cgalParamType{a class with `bool operator()(std::size_t iteration, double energy) const` or
-                   `bool operator()(std::size_t iteration, double energy, std::size_t inverted_cells) const`
-                   (the result may be any type convertible to `bool`)}
-    \cgalParamDefault{unused}
-    \cgalParamExtra{The visitor is copied. With `untangle_first`, the untangling's rounds are reported first, as
-                    by `Distortion_optimization::untangle()`, then the iterations are numbered from 1 again. A
-                    run stopped before the map is untangled returns that map with energies that are not numbers.}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 

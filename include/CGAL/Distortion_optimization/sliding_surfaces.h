@@ -41,14 +41,10 @@ namespace Distortion_optimization {
 \ingroup PkgDistortionOptimizationRef
 A sphere (a circle for planar maps) as a sliding surface, with an exact-to-rounding projection:
 the default unit sphere centred at the origin is the boundary of the image of
-`star_shaped_to_unit_ball()`.
+`star_shaped_to_unit_ball()`. Its `project()` takes points of dimension d = 2 or 3, and gives
+the outward unit normal; it takes no hint.
 
-It is a model of the concept `SlidingSurface`: `project(x, normal)` returns the point of the
-surface closest to `x` (an `std::array<double, d>`, d = 2 or 3) and sets `normal` to the unit
-outward normal there. A model must be callable concurrently from several threads. A model may also
-offer `project(x, normal, hint)`, `hint` a `std::ptrdiff_t&` that it reads and sets (as
-`Triangle_surface` does): the optimizer then keeps one hint per vertex, as the last query for
-that vertex left it (-1 before the first), and queries for different vertices may run concurrently.
+\cgalModels `SlidingSurface`
 */
 class Sphere_surface
 {
@@ -106,6 +102,8 @@ triangles' vertex order, so that a consistently oriented surface gets consistent
 triangles' normals cancel, as on a fold, the answering triangle's is taken). The surface is
 copied: the mesh it was made from may change or go away. It takes hints (the triangle of the last
 answer), which spare most of a query for a point near the last one.
+
+\cgalModels `SlidingSurface`
 */
 class Triangle_surface
 {

@@ -177,8 +177,11 @@ untangle(const TriangleMesh& tm, TargetMap target, const NamedParameters& np = C
 \ingroup PkgDistortionOptimizationRef
 
 Untangles the map that sends each vertex `v` of the cells of the complex `c3t3` from its position
-in the triangulation to `get(target, v)`: as the triangle-mesh overload, for tetrahedra (only the
-cells in the complex count).
+in the triangulation to `get(target, v)` (only the cells in the complex count).
+
+Same as the overload for triangle meshes, see `untangle()`, for tetrahedra, and only what differs
+is documented here: the rounds are the same, but there is no second attempt from Tutte's embedding
+(which the triangle-mesh overload makes for disks).
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
 \tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`
@@ -187,92 +190,29 @@ cells in the complex count).
 \param c3t3 the source complex (not modified)
 \param target the map to untangle; written only on success (or when the visitor stops the run),
        and only for free complex vertices
-\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
-       ones listed below; `vertex_point_map` is not used (positions come from the triangulation), and
-       the other named parameters of `CGAL::minimize_distortion()` are ignored
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters": those of
+       the overload for triangle meshes but `vertex_point_map` (positions come from the
+       triangulation), with `C3T3::Triangulation::Vertex_handle` as the key type of the vertex
+       property maps (`vertex_is_constrained_map`, `vertex_weight_map`), which cover the vertices of
+       the cells of `c3t3`; what differs further is listed below. The other named parameters of
+       `CGAL::minimize_distortion()` are ignored.
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_is_constrained_map}
-    \cgalParamDescription{a property map containing the constrained-or-not status of each vertex of the cells
-                          of `c3t3`: a constrained vertex never moves}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
-                   as key type and `bool` as value type}
     \cgalParamDefault{the vertices on the boundary of the complex (on a facet between a cell of the complex and a
                       cell outside it) are constrained; with `sliding_boundary`, no vertex is}
   \cgalParamNEnd
 
-  \cgalParamNBegin{vertex_weight_map}
-    \cgalParamDescription{a property map associating a weight omega(v) to each vertex, which weighs the cells of the
-                          barrier's energy as in `CGAL::minimize_distortion()`
-                          (`Distortion_optimization::parameters::vertex_weight_map()`)}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `C3T3::Triangulation::Vertex_handle`
-                   as key type and a number type convertible to `double` as value type}
-    \cgalParamDefault{omega(v) = 1 for every vertex}
-    \cgalParamExtra{Every weight must be finite and positive.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{cell_weighting}
-    \cgalParamDescription{the cell weights w(c, v) of the barrier's energy
-                          (`Distortion_optimization::parameters::cell_weighting()`)}
-    \cgalParamType{`Distortion_optimization::Cell_weighting`}
-    \cgalParamDefault{`Distortion_optimization::Cell_weighting::AVERAGE_VOLUME`}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of rounds (values of eps) of each untangling attempt: the map is first
-                          untangled in growing neighbourhoods of its inverted cells, then as a whole if cells remain
-                          inverted (and, with `preserve_global_injectivity`, first without the boundary guard)}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`1000`}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{preserve_global_injectivity}
-    \cgalParamDescription{if `true`, a boundary that does not cross itself in the start map never starts to
-                          (exact predicates) (`Distortion_optimization::parameters::preserve_global_injectivity()`)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-    \cgalParamExtra{When some free vertex is on the boundary and the start's boundary crosses itself (or
-                    a piece of the mesh lies inside another),
-                    `Distortion_optimization::Crossing_start_boundary` is thrown.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads; `0` for all the hardware offers
-                          (`Distortion_optimization::parameters::number_of_threads()`)}
-    \cgalParamType{`int`}
-    \cgalParamDefault{`1`}
-    \cgalParamExtra{Used when the program links `CGAL::TBB_support` (`CGAL_LINKED_WITH_TBB`); sequential otherwise.
-                    A negative value is an error.}
-  \cgalParamNEnd
-
   \cgalParamNBegin{sliding_boundary}
-    \cgalParamDescription{a surface on which the boundary vertices that are not constrained slide
-                          (`Distortion_optimization::parameters::sliding_boundary()`)}
     \cgalParamType{a model of `SlidingSurface` in space (its `project()` is called with `std::array<double, 3>`),
                    e.g. `Distortion_optimization::Sphere_surface` or `Distortion_optimization::Triangle_surface`}
-    \cgalParamDefault{unused}
-    \cgalParamExtra{With it, `vertex_is_constrained_map` defaults to no vertex.}
   \cgalParamNEnd
 
   \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
     \cgalParamDefault{`CGAL::Kernel_traits<C3T3::Triangulation::Geom_traits::Point_3>::Kernel`, the kernel of the
                       triangulation's points}
     \cgalParamExtra{Its `Orientation_3` decides, on `double` coordinates, whether each source tetrahedron is positive
                     and which target tetrahedra are inverted. Its `Point_3` must be constructible from three `double`s.}
-  \cgalParamNEnd
-
-  \cgalParamNBegin{visitor}
-    \cgalParamDescription{a callable called after each round (numbered from 1 over all attempts) with the mean
-                          untangling barrier of the part of the map being untangled and, if it takes a third
-                          argument, the number of inverted or flat cells left in that part; returning `false`
-                          stops the run and writes the map of that round}
-    \cgalParamType{a class with `bool operator()(std::size_t round, double barrier) const` or
-                   `bool operator()(std::size_t round, double barrier, std::size_t inverted_cells) const`
-                   (the result may be any type convertible to `bool`)}
-    \cgalParamDefault{unused}
-    \cgalParamExtra{The visitor is copied.}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
