@@ -7,6 +7,7 @@
 
 #include "command_line.h"
 
+#include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 #include <CGAL/Distortion_optimization/errors.h>
 
 #include <array>
@@ -70,23 +71,11 @@ void unlink_temporaries_and_reraise(int signal)
   std::raise(signal);
 }
 
-// Where the bytes for `path` go: the file a symbolic link names, and whether that is a device
-// or a pipe rather than a file to replace.
+// Where the bytes for `path` go: the file a symbolic link names, and whether that is a device or a
+// pipe rather than a file to replace; the library's writers decide it the same way.
 std::string destination(const std::string& path, bool* special)
 {
-  struct stat s;
-  *special = false;
-  if(::lstat(path.c_str(), &s) != 0) return path;   // a new file
-  const bool link = S_ISLNK(s.st_mode);
-  if(link && ::stat(path.c_str(), &s) != 0) throw Invalid_input(printable(path) + ": a symbolic link to nothing");
-  if(S_ISDIR(s.st_mode)) throw Invalid_input(printable(path) + ": a folder, not a file name");
-  *special = !S_ISREG(s.st_mode);
-  if(!link || *special) return path;   // a device is written through its name (/dev/stdout too)
-  char* resolved = ::realpath(path.c_str(), nullptr);
-  if(resolved == nullptr) throw Invalid_input(printable(path) + ": cannot resolve the symbolic link");
-  const std::string place = resolved;
-  std::free(resolved);
-  return place;
+  return CGAL::Distortion_optimization::IO::internal::destination(path, *special).string();
 }
 
 } // namespace

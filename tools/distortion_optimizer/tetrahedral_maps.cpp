@@ -32,9 +32,10 @@ namespace distortion_optimizer {
 
 namespace {
 
-// The scale of the tetrahedra's vertices (a point in none has no say): a power of two that
-// brings the largest half extent of their box into [1/2, 1), as the library scales complexes.
-double scale_of_cells(const DO::IO::Tetrahedron_soup& soup)
+// The size of the tetrahedra's vertices (a point in none has no say): the exponent e for which
+// their box's largest half extent is in [2^(e-1), 2^e), as the library scales complexes (1 for no
+// extent; the exponent of a subnormal extent is taken as -1023's).
+int size_exponent_of_cells(const DO::IO::Tetrahedron_soup& soup)
 {
   CGAL::Bbox_3 box;
   for(const auto& t : soup.cells)
@@ -42,8 +43,7 @@ double scale_of_cells(const DO::IO::Tetrahedron_soup& soup)
                                               soup.points[v][0], soup.points[v][1], soup.points[v][2]);
   double half_extent = 0;   // an extent may overflow (from -2^1023 to 2^1023)
   for(int k = 0; k < 3; ++k) half_extent = std::max(half_extent, box.max_coord(k) / 2 - box.min_coord(k) / 2);
-  const bool sized = half_extent > 0 && std::isfinite(half_extent);
-  return (sized ? std::ldexp(1., std::min(-std::ilogb(half_extent), 1023)) : 1.) / 2;
+  return half_extent > 0 && std::isfinite(half_extent) ? 1 + std::max(std::ilogb(half_extent), -1023) : 1;
 }
 
 } // namespace
@@ -87,9 +87,8 @@ int run_tetrahedra(const Command_line& c)
   if(c.volume_mode()) {
     // The start is the tool's own, of about unit size (the radial map's, the square of a unit
     // source's): a source too far from unit size for the measures is refused as such, before
-    // the radial map squares its size out of double precision. The size of the tetrahedra's
-    // vertices (a point in none keeps its target): 2^size, the inverse of their scale.
-    const int size = -std::ilogb(scale_of_cells(source));
+    // the radial map squares its size out of double precision.
+    const int size = size_exponent_of_cells(source);
     if(std::abs(size - 1) > DO::largest_size_ratio_exponent<3>)
       throw DO::Invalid_input("the source's size (about 2^" + std::to_string(size) + ") and the unit size of the start (--start " +
                               c.start + ") differ by more than 2^" + std::to_string(DO::largest_size_ratio_exponent<3>) +
