@@ -8,6 +8,7 @@
 #define DISTORTION_OPTIMIZATION_BENCHMARK_BENCH_HELPERS_H
 
 #include "../../examples/Distortion_optimization/volume_examples.h"
+#include "../../test/Distortion_optimization/instantiations/extern_mesh_interior.h"
 
 #include <algorithm>
 #include <chrono>

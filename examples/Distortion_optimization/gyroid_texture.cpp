@@ -2,8 +2,8 @@
 // Figs. 13 and 14).
 //
 // The gyroid sin x cos y + sin y cos z + sin z cos x = 0 has genus 3 per period cell: mapping it
-// onto a sphere directly, as a surface, is hard. Instead, the cube that holds it is meshed with
-// tetrahedra (mesh_interior()) and mapped onto the unit ball, and the gyroid rides along, embedded
+// onto a sphere directly, as a surface, is hard. Instead, the cube that holds it is cut into
+// tetrahedra (a regular grid, each small cube into six) and mapped onto the unit ball, and the gyroid rides along, embedded
 // once in the cube's tetrahedra by barycentric coordinates (eq. 18). The start map, the radial
 // construction star_shaped_to_unit_ball() (the method of [NSZ16] in Fig. 14), flattens tetrahedra
 // across the cube's edges; CGAL::minimize_distortion() untangles them, then minimizes the isometric
@@ -47,7 +47,7 @@ int main(int argc, char* argv[])
   try {
     // The gyroid is kept 5% inside the cube, so that every vertex is inside a tetrahedron.
     const Surface gyroid = mesh_gyroid(h, periods, 0.95 * h);
-    const Volume volume = DO::mesh_interior(cube(h), DOP::exude_slivers(true));
+    const Volume volume = cube_volume(h, 16);   // 24,576 tetrahedra
     const auto embedding = DO::embed_surface_in_volume(volume, gyroid);
 
     Targets ball;

@@ -1,9 +1,10 @@
-// What the volume examples (volume_to_ball, gyroid_texture) share: their types, and the cube and
-// gyroid inputs of the paper's Figs. 13 and 14.
+// What the volume examples (volume_to_ball, gyroid_texture) and benchmarks share: their types, and
+// the cube and gyroid inputs of the paper's Figs. 13 and 14.
 
 #ifndef DISTORTION_OPTIMIZATION_EXAMPLES_VOLUME_EXAMPLES_H
 #define DISTORTION_OPTIMIZATION_EXAMPLES_VOLUME_EXAMPLES_H
 
+#include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -18,8 +19,11 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace volume_examples {
@@ -42,6 +46,36 @@ inline Surface cube(double h)
                             {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   for(const auto& f : faces) s.add_face(v[f[0]], v[f[1]], v[f[2]]);
   return s;
+}
+
+// The cube [-h, h]^3 as n^3 small cubes, each cut into the six tetrahedra around its diagonal
+// (Freudenthal's subdivision, whose tetrahedra match across the small cubes' faces).
+inline Volume cube_volume(double h, int n)
+{
+  std::vector<std::array<double, 3>> points;
+  for(int k = 0; k <= n; ++k)
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i) points.push_back({h * (2. * i / n - 1), h * (2. * j / n - 1), h * (2. * k / n - 1)});
+  // A path from a small cube's lowest corner to its highest along the axes in the order a, b, c;
+  // the odd orders have their last two vertices swapped, so that every tetrahedron is positive.
+  const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+  std::vector<std::array<std::size_t, 4>> tetrahedra;
+  for(int k = 0; k < n; ++k)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+        for(int o = 0; o < 6; ++o) {
+          int corner[3] = {i, j, k};
+          std::array<std::size_t, 4> t;
+          for(int v = 0; v < 4; ++v) {
+            if(v > 0) ++corner[orders[o][v - 1]];
+            t[v] = std::size_t(corner[0] + (n + 1) * (corner[1] + (n + 1) * corner[2]));
+          }
+          if(o >= 3) std::swap(t[2], t[3]);
+          tetrahedra.push_back(t);
+        }
+  Volume volume;
+  CGAL::Distortion_optimization::c3t3_from_tetrahedra(volume, points, tetrahedra);
+  return volume;
 }
 
 // The gyroid sin x cos y + sin y cos z + sin z cos x = 0 inside the box [-a, a]^3, with `periods`

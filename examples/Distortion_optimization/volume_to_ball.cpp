@@ -1,25 +1,24 @@
 // A closed surface's volume onto the unit ball (the paper's section 4.4 and Fig. 14).
 //
-// Reads a closed triangle surface that is star-shaped about the centre of its volume (default:
-// blobby.off, a smooth, non-convex blob), scales it to the volume of the unit ball, meshes its
-// inside with tetrahedra (mesh_interior(), CGAL's Mesh_3), maps them onto the unit ball by the
-// star-shaped radial construction (star_shaped_to_unit_ball()), then lowers the symmetric
-// Dirichlet energy of that map with CGAL::minimize_distortion(), the boundary vertices sliding on
-// the unit sphere. The few tetrahedra that the ball map flattens are untangled first. Writes the
-// optimized map, with the distortion of each tetrahedron, as a VTK file for ParaView.
+// Reads a tetrahedral mesh (MEDIT .mesh) of a volume that is star-shaped about its centroid (e.g.
+// the inside of blobby.off, a smooth, non-convex blob, meshed by the example mesh_closed_surface),
+// scales it to the volume of the unit ball, maps it onto the unit ball by the star-shaped radial
+// construction (star_shaped_to_unit_ball()), then lowers the symmetric Dirichlet energy of that
+// map with CGAL::minimize_distortion(), the boundary vertices sliding on the unit sphere. The few
+// tetrahedra that the ball map flattens are untangled first. Writes the optimized map, with the
+// distortion of each tetrahedron, as a VTK file for ParaView.
 //
-//   volume_to_ball [closed_surface.off [output.vtu]]     (default output: volume_to_ball.vtu)
+//   volume_to_ball volume.mesh [output.vtu]     (default output: volume_to_ball.vtu)
 
 #include "volume_examples.h"
 
+#include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/vtu.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
-
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <array>
 #include <cmath>
@@ -35,21 +34,27 @@ using namespace volume_examples;
 
 int main(int argc, char* argv[])
 {
-  const std::string filename = argc > 1 ? argv[1] : DISTORTION_OPTIMIZATION_DATA_DIR "/blobby.off";
-  const std::string output = argc > 2 ? argv[2] : "volume_to_ball.vtu";
-  Surface surface;
-  if(!CGAL::IO::read_polygon_mesh(filename, surface) || !CGAL::is_triangle_mesh(surface)) {
-    std::cerr << "Error: cannot read a triangle mesh from " << filename << std::endl;
-    return EXIT_FAILURE;
+  if(argc < 2) {
+    std::cerr << "usage: volume_to_ball volume.mesh [output.vtu]" << std::endl;
+    return 2;
   }
+  const std::string filename = argv[1];
+  const std::string output = argc > 2 ? argv[2] : "volume_to_ball.vtu";
   try {
+    DO::IO::Tetrahedron_soup soup = DO::IO::read_tetrahedron_soup(filename);
     // The symmetric Dirichlet energy is not scale invariant: at the ball's volume, the map pays
-    // only for the change of shape. interior_mesh_sizes() also checks the surface (closed,
-    // manifold, no self-intersection) as mesh_interior() will.
-    const double scale = std::cbrt(4 * CGAL_PI / 3 / DO::interior_mesh_sizes(surface).volume);
-    for(auto v : surface.vertices()) surface.point(v) = CGAL::ORIGIN + scale * (surface.point(v) - CGAL::ORIGIN);
-    // Sliver exudation removes the flattest tetrahedra: fewer come out flat under the ball map.
-    const Volume volume = DO::mesh_interior(surface, DOP::exude_slivers(true));
+    // only for the change of shape.
+    double enclosed = 0;
+    for(const auto& t : soup.cells) {
+      const auto& [a, b, c, d] = t;
+      const auto p = [&](std::size_t i) { return Point(soup.points[i][0], soup.points[i][1], soup.points[i][2]); };
+      enclosed += std::abs(CGAL::volume(p(a), p(b), p(c), p(d)));
+    }
+    const double scale = std::cbrt(4 * CGAL_PI / 3 / enclosed);
+    for(auto& point : soup.points)
+      for(double& x : point) x *= scale;
+    Volume volume;
+    DO::c3t3_from_tetrahedra(volume, soup.points, soup.cells);
 
     // Throws if the volume is not star-shaped about its centroid; returns how many cells it flattens.
     Targets ball;
@@ -79,7 +84,7 @@ int main(int argc, char* argv[])
     DO::IO::write_VTU(output, points, tetrahedra, {{measure.name(), values}});
     std::cout << "wrote " << output << std::endl;
   } catch(const DO::Invalid_input& e) {
-    // Not closed, not manifold, self-intersecting, not star-shaped about its centre, ...
+    // A file that is not a tetrahedral mesh, a volume not star-shaped about its centroid, ...
     std::cerr << "Error: " << e.what() << std::endl;
     return EXIT_FAILURE;
   }

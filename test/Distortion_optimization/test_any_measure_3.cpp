@@ -29,7 +29,7 @@ TEST(AnyMeasure, TetrahedralMapsAreTheSameBitsAsWithTheMeasuresOwnType)
   ASSERT_EQ(inverted(c3t3, start), 0u);
   // Fixed boundary (the Laplacian's or Newton's steps) and nothing fixed (a smooth model's steps
   // for the dilatations); the measures are among those whose optimizer the tests share
-  // (extern_templates.h).
+  // (instantiations/extern_templates.h).
   const auto compare = [&](const auto& measure) {
     const std::string name = measure.name();
     for(const bool fixed : {true, false}) {

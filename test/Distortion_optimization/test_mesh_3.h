@@ -12,7 +12,8 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
-#include <CGAL/make_mesh_3.h>
+#include <CGAL/Polyhedral_mesh_domain_3.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -32,19 +33,21 @@ using Vertex_handle = Tr::Vertex_handle;
 using Target_storage = std::unordered_map<Vertex_handle, Point_3>;
 using Target_map = boost::associative_property_map<Target_storage>;
 
+// A Mesh_3 mesh of {f < 0} inside the ball of the given radius, at the given size (no perturbation
+// or exudation): compiled once, in instantiations/mesh_implicit.cpp (make_mesh_3 takes minutes).
+C3t3 mesh_implicit(double (*f)(const Point_3&), double radius, double size);
+
+// Complexes of another domain type: Mesh_3 on the polyhedral domain bounded by a closed surface
+// (facet distance 0.05, cell size 0.25, radius-edge ratio 3), compiled once as well.
+using Surface_mesh_3 = CGAL::Surface_mesh<Point_3>;
+using Polyhedral_domain = CGAL::Polyhedral_mesh_domain_3<Surface_mesh_3, K>;
+using Polyhedral_tr = CGAL::Mesh_triangulation_3<Polyhedral_domain>::type;
+using Polyhedral_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Polyhedral_tr>;
+Polyhedral_c3t3 mesh_polyhedral(const Surface_mesh_3& surface);
+
 namespace {
 
 inline double unit_sphere(const Point_3& p) { return CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()) - 1.; }
-
-// A Mesh_3 mesh of {f < 0} inside the ball of the given radius about the origin.
-inline C3t3 mesh_implicit(double (*f)(const Point_3&), double radius, double size)
-{
-  namespace params = CGAL::parameters;
-  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(f, K::Sphere_3(CGAL::ORIGIN, radius * radius));
-  Criteria criteria(params::facet_angle = 25, params::facet_size = size, params::facet_distance = size / 10,
-                    params::cell_radius_edge_ratio = 3, params::cell_size = size);
-  return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
-}
 
 inline C3t3 mesh_sphere(double size) { return mesh_implicit(unit_sphere, 2., size); }
 

@@ -20,7 +20,6 @@
 #include <CGAL/Polyhedral_mesh_domain_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
-#include <CGAL/make_mesh_3.h>
 
 #include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -118,19 +117,11 @@ TEST(TetrahedralMeshes, HarmonicMapOfAnAffineBoundaryIsThatAffineMap)
 
 TEST(TetrahedralMeshes, PolyhedralDomainFromAClosedSurfaceMesh)
 {
-  using Mesh = CGAL::Surface_mesh<Point_3>;
-  using Poly_domain = CGAL::Polyhedral_mesh_domain_3<Mesh, K>;
-  using Poly_tr = CGAL::Mesh_triangulation_3<Poly_domain>::type;
-  using Poly_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Poly_tr>;
-  namespace params = CGAL::parameters;
-  Mesh octahedron;
+  Surface_mesh_3 octahedron;
   CGAL::make_icosahedron(octahedron, Point_3(0, 0, 0), 1.);
-  Poly_domain domain(octahedron);
-  CGAL::Mesh_criteria_3<Poly_tr> criteria(params::facet_distance = 0.05, params::cell_radius_edge_ratio = 3,
-                                           params::cell_size = 0.25);
-  const Poly_c3t3 c3t3 = CGAL::make_mesh_3<Poly_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  const Polyhedral_c3t3 c3t3 = mesh_polyhedral(octahedron);
   ASSERT_GT(c3t3.number_of_cells_in_complex(), 50u);
-  std::unordered_map<Poly_tr::Vertex_handle, Point_3> storage;
+  std::unordered_map<Polyhedral_tr::Vertex_handle, Point_3> storage;
   boost::associative_property_map<decltype(storage)> target(storage);
   DO::map_vertices(c3t3, target, [](const Point_3& p) { return Point_3(p.x() + 0.1 * p.y() * p.y(), p.y(), p.z()); });
   const auto r = CGAL::minimize_distortion(c3t3, target, DO::MIPS(), CGAL::parameters::number_of_iterations(5));
@@ -510,16 +501,12 @@ TEST(TetrahedralMeshes, LaplacianPreconditionerGoesFurtherOnMipsNewtonSystemsNea
 // and leave the target alone. The radial map of Table 1 keeps the unit sphere.
 TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
 {
-  namespace params = CGAL::parameters;
   const auto torus = [](const Point_3& p) {
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     const double rho = std::sqrt(x * x + y * y) - 1;
     return rho * rho + z * z - 0.16;
   };
-  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(torus, K::Sphere_3(CGAL::ORIGIN, 4.));
-  Criteria criteria(params::facet_angle = 25, params::facet_size = 0.2, params::facet_distance = 0.02,
-                    params::cell_radius_edge_ratio = 3, params::cell_size = 0.2);
-  const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  const C3t3 c3t3 = mesh_implicit(+torus, 2., 0.2);
   Target_storage ball;
   try {
     DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(1, 0, 0));
