@@ -8,9 +8,10 @@
 // construction star_shaped_to_unit_ball() (the method of [NSZ16] in Fig. 14), flattens tetrahedra
 // across the cube's edges; CGAL::minimize_distortion() untangles them, then minimizes the isometric
 // dilatation C = max(s1, 1/s3), the boundary sliding on the unit sphere. Prints the distortion of
-// the gyroid carried by each map, and writes both carried gyroids.
+// the gyroid carried by each map, and writes both carried gyroids. The gyroid (data/gyroid.off,
+// one period, meshed by CGAL's Mesh_3) is placed 5% inside the cube, whatever its size in the file.
 //
-//   gyroid_texture [periods [output_folder]]     (default: 2 periods per side, the working directory)
+//   gyroid_texture [gyroid.off [output_folder]]     (default output folder: the working directory)
 
 #include "volume_examples.h"
 
@@ -20,8 +21,10 @@
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -34,19 +37,24 @@ using namespace volume_examples;
 
 int main(int argc, char* argv[])
 {
-  const int periods = argc > 1 ? std::atoi(argv[1]) : 2;
+  const std::string filename = argc > 1 ? argv[1] : DISTORTION_OPTIMIZATION_DATA_DIR "/gyroid.off";
   const std::string folder = argc > 2 ? std::string(argv[2]) + "/" : std::string();
-  if(periods < 1) {
-    std::cerr << "Error: the number of periods must be positive" << std::endl;
+  Surface gyroid;
+  if(!CGAL::IO::read_polygon_mesh(filename, gyroid) || !CGAL::is_triangle_mesh(gyroid) || gyroid.is_empty()) {
+    std::cerr << "Error: cannot read a triangle mesh from " << filename << std::endl;
     return EXIT_FAILURE;
   }
   // The cube has the unit ball's volume: C is not scale invariant, and a cube of another size
   // would pay for the change of size everywhere.
   const double h = std::cbrt(4 * CGAL_PI / 3) / 2;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(gyroid);
+  double extent = 0;
+  for(int k = 0; k < 3; ++k) extent = std::max(extent, (box.max(k) - box.min(k)) / 2);
+  const Point centre((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
+  for(auto v : gyroid.vertices())
+    gyroid.point(v) = CGAL::ORIGIN + 0.95 * h / extent * (gyroid.point(v) - centre);
   const DO::Isometric_dilatation measure;
   try {
-    // The gyroid is kept 5% inside the cube, so that every vertex is inside a tetrahedron.
-    const Surface gyroid = mesh_gyroid(h, periods, 0.95 * h);
     const Volume volume = cube_volume(h, 16);   // 24,576 tetrahedra
     const auto embedding = DO::embed_surface_in_volume(volume, gyroid);
 

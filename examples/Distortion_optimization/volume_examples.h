@@ -1,5 +1,5 @@
 // What the volume examples (volume_to_ball, gyroid_texture) and benchmarks share: their types, and
-// the cube and gyroid inputs of the paper's Figs. 13 and 14.
+// the cube of the paper's Figs. 13 and 14.
 
 #ifndef DISTORTION_OPTIMIZATION_EXAMPLES_VOLUME_EXAMPLES_H
 #define DISTORTION_OPTIMIZATION_EXAMPLES_VOLUME_EXAMPLES_H
@@ -8,14 +8,7 @@
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Labeled_mesh_domain_3.h>
-#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
-#include <CGAL/Mesh_criteria_3.h>
-#include <CGAL/Mesh_triangulation_3.h>
-#include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
-#include <CGAL/make_mesh_3.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -76,42 +69,6 @@ inline Volume cube_volume(double h, int n)
   Volume volume;
   CGAL::Distortion_optimization::c3t3_from_tetrahedra(volume, points, tetrahedra);
   return volume;
-}
-
-// The gyroid sin x cos y + sin y cos z + sin z cos x = 0 inside the box [-a, a]^3, with `periods`
-// periods along the side 2 h of the cube, meshed by Mesh_3 as the interface between label 1
-// (function < 0) and label 2 (function > 0); the facets on the box (label 0 beyond it) are dropped.
-inline Surface mesh_gyroid(double h, int periods, double a)
-{
-  using Domain = CGAL::Labeled_mesh_domain_3<K>;
-  using Tr = CGAL::Mesh_triangulation_3<Domain>::type;
-  using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
-  namespace params = CGAL::parameters;
-
-  const double k = CGAL_PI * periods / h;   // 2 pi periods / (2 h)
-  auto label = [k, a](const Point& p) {
-    if(std::abs(p.x()) > a || std::abs(p.y()) > a || std::abs(p.z()) > a) return 0;
-    const double x = k * p.x(), y = k * p.y(), z = k * p.z();
-    return std::sin(x) * std::cos(y) + std::sin(y) * std::cos(z) + std::sin(z) * std::cos(x) < 0 ? 1 : 2;
-  };
-  // A seeded domain gives the same mesh on every run; the default relative error bound (1e-3 of
-  // the box) would put surface points visibly off the gyroid.
-  CGAL::Random random(0);
-  const double b = 1.05 * a;
-  Domain domain(params::function = label, params::bounding_object = K::Iso_cuboid_3(-b, -b, -b, b, b, b),
-                params::relative_error_bound = 1e-6, params::p_rng = &random);
-  const double size = 2 * h / periods / 25;   // relative to one period; no cell criterion: only the surface is wanted
-  const CGAL::Mesh_criteria_3<Tr> criteria(params::facet_angle = 25, params::facet_size = size,
-                                           params::facet_distance = size / 10);
-  C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
-
-  std::vector<C3t3::Facet> box_facets;
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
-    if(c3t3.surface_patch_index(*f) != C3t3::Surface_patch_index(1, 2)) box_facets.push_back(*f);
-  for(const C3t3::Facet& f : box_facets) c3t3.remove_from_complex(f);
-  Surface gyroid;
-  CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, gyroid);
-  return gyroid;
 }
 
 } // namespace volume_examples
