@@ -47,9 +47,12 @@ endfunction()
 function(distortion_add_test name)
   _distortion_add_executable(${name} test/Distortion_optimization ${ARGN})
   target_link_libraries(${name} PRIVATE GTest::gtest_main)
+  # The GoogleTest tests share the temporary folder (and some check what is left in it): one at a
+  # time, while `ctest -j` runs the others (the installed-package build, the examples) beside them.
   gtest_discover_tests(${name}
     WORKING_DIRECTORY "${PROJECT_BINARY_DIR}/test/Distortion_optimization"
-    DISCOVERY_TIMEOUT 60)
+    DISCOVERY_TIMEOUT 60
+    PROPERTIES RESOURCE_LOCK distortion_temporary_folder)
 endfunction()
 
 function(distortion_add_example name)

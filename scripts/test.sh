@@ -11,4 +11,6 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release \
 cmake --build build -j2
 # The manual and reference (Doxygen, into build/doc/html): a warning is an error (Doxyfile).
 (cd doc/Distortion_optimization && doxygen Doxyfile)
-ctest --test-dir build --output-on-failure
+# Two at a time: the GoogleTest tests one after the other (they share a lock), the installed-package
+# build, the examples and the demo beside them.
+ctest --test-dir build --output-on-failure -j2
