@@ -296,6 +296,17 @@ bool set_option(Command_line& c, const std::string& option, const std::string& v
   return true;
 }
 
+// Whether `option` takes a value (whatever the value).
+bool set_option_known(const std::string& option)
+{
+  Command_line probe;
+  try {
+    return set_option(probe, option, "1");
+  } catch(const Usage_error&) {   // "1" is not a value of that option: it is one
+    return true;
+  }
+}
+
 } // namespace
 
 Command_line parse(int argc, char** argv)
@@ -314,15 +325,11 @@ Command_line parse(int argc, char** argv)
     }
     if(i + 1 >= argc) {
       // A known option without its value, or an unknown one (a misspelt flag given last).
-      bool known = true;
-      try {
-        Command_line probe;
-        known = set_option(probe, option, "1");
-      } catch(const Usage_error&) {   // "1" is not a value of that option: it is one
-      }
-      throw Usage_error(known ? option + " needs a value" : "unknown option " + option);
+      throw Usage_error(set_option_known(option) ? option + " needs a value" : "unknown option " + option);
     }
     const std::string value = argv[++i];
+    // An empty value (--target '') would silently mean "not given".
+    if(value.empty() && set_option_known(option)) throw Usage_error(option + " needs a value, not an empty one");
     if(seen.count(option)) throw Usage_error(option + " is given twice");
     seen[option] = value;
     if(!set_option(c, option, value)) throw Usage_error("unknown option " + option);

@@ -132,7 +132,10 @@ void Temporary_file::rename_to(const std::string& target)
 void remove_temporary_files_on_signals()
 {
   Temporary_registry::get();   // constructed before any handler may run
-  for(int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) std::signal(signal, unlink_temporaries_and_reraise);
+  for(int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, unlink_temporaries_and_reraise);
+  // A closed standard output (`... | head`) must not kill the tool after its files are written:
+  // writes to it fail instead, and the exit status is the run's.
+  std::signal(SIGPIPE, SIG_IGN);
 }
 
 } // namespace distortion_optimizer

@@ -43,8 +43,9 @@ private:
   bool kept_ = false, streamed_ = false;
 };
 
-// Installs handlers of SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove the temporary files being
-// written and then end the program as the signal would have.
+// Installs handlers of SIGINT, SIGTERM and SIGHUP that remove the temporary files being
+// written and then end the program as the signal would have; ignores SIGPIPE (a write into a
+// closed pipe fails instead).
 void remove_temporary_files_on_signals();
 
 } // namespace distortion_optimizer

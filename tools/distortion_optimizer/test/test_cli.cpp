@@ -1622,3 +1622,31 @@ TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
     EXPECT_NE(bad.output.find(fragment), std::string::npos) << arguments << "\n" << bad.output;
   }
 }
+
+// An empty value is a usage error, never "not given": --target '' once computed a Tutte map.
+TEST(CommandLine, EmptyOptionValuesAreUsageErrors)
+{
+  for(const std::string option : {"--target", "--vertex-weights", "--report", "--svg", "--energy-plot", "--flat-output",
+                                   "--mesh-output", "--fix", "--measure", "--source"}) {
+    const Tool_run result = run("--source a.off --output b.off " + option + " ''");
+    EXPECT_EQ(result.status, 2) << option;
+    EXPECT_NE(result.output.find(option + " needs a value, not an empty one"), std::string::npos) << result.output;
+  }
+}
+
+// A closed standard output does not kill the tool once its files are written: the exit status is
+// the run's (it was SIGPIPE's, 141, with every output in place).
+TEST(CommandLine, AClosedStandardOutputLeavesTheExitStatusToTheRun)
+{
+  const std::string s = temp("s_pipe.off"), t = temp("t_pipe.off"), o = temp("o_pipe.off"), r = temp("r_pipe.json");
+  write_planar_pair(s, t);
+  std::remove(o.c_str());
+  std::remove(r.c_str());
+  const std::string command = "set -o pipefail; " + std::string(DISTORTION_OPTIMIZER) + " --source " + s + " --target " + t +
+                              " --output " + o + " --report " + r + " | head -c 0";
+  const int status = std::system(("bash -c '" + command + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_TRUE(exists(o));
+  EXPECT_TRUE(exists(r));
+}
