@@ -1039,6 +1039,19 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   EXPECT_EQ(message("trailing.ply", header + points + "3 0 1 2\n\nthis is garbage\n"),
             ":16: content after the 5 elements the header announces");
   EXPECT_EQ(message("blank.ply", header + points + "3 0 1 2\n\n  \n"), "no error");
+  // Headers that crashed CGAL's reader (hostile round 3), and one without x that it read as flat.
+  EXPECT_EQ(message("property_only.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),
+            ":3: a property declared before any element");
+  EXPECT_EQ(message("before_element.ply", "ply\nformat ascii 1.0\nproperty float x\n" + header.substr(header.find("element")) +
+                                            points + "3 0 1 2\n"),
+            ":3: a property declared before any element");
+  std::string list_x = header;
+  list_x.replace(list_x.find("property float x"), 16, "property list uchar float x");
+  EXPECT_EQ(message("list_x.ply", list_x + "1 0 0 0\n1 1 0 0\n1 1 1 0\n1 0 1 0\n3 0 1 2\n"),
+            ":4: the vertex coordinate x is declared as a list");
+  std::string no_x = header;
+  no_x.erase(no_x.find("property float x\n"), 17);
+  EXPECT_EQ(message("no_x.ply", no_x + "0 0\n0 0\n1 0\n1 0\n3 0 1 2\n"), ": the vertices have no property x");
   const std::string ts = "GOCAD TSurf 1\nHEADER {\nname:t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n";
   EXPECT_EQ(message("ok.ts", ts), "no error");
   EXPECT_EQ(message("garbage.ts", ts + "garbage here\n"), ":11: content after the last surface's END");

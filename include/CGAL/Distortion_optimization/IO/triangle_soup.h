@@ -395,10 +395,12 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
   } else if(e == "ply") {
     const std::size_t header_end = bytes.find("end_header");
     if(bytes.compare(0, 3, "ply") != 0 || header_end == std::string::npos) return;   // CGAL's reader tells
-    bool ascii = false, faces = false;
-    std::size_t elements = 0;
+    bool ascii = false, faces = false, vertices = false;
+    std::size_t elements = 0, line_number = 0;
     std::string element, index_type;   // the element being declared; the type of the faces' vertex indices
+    std::string coordinates;           // the vertices' scalar coordinates among x, y and z
     for(const std::string& line : split(bytes.substr(0, header_end))) {
+      ++line_number;
       std::istringstream words(line);
       std::string word, name, count_type, type;
       unsigned long long count = 0;
@@ -407,11 +409,28 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       if(word == "element" && (words >> element >> count)) {
         elements += static_cast<std::size_t>(count);
         faces = faces || element == "face" || element == "faces";
+        vertices = vertices || element == "vertex";
+      }
+      // CGAL's reader crashes on either of these (a property of no element, a list coordinate).
+      if(word == "property" && element.empty())
+        throw Invalid_input(shown + ":" + std::to_string(line_number) + ": a property declared before any element");
+      if(word == "property" && element == "vertex" && (words >> type >> name)) {
+        const bool list = type == "list";
+        if(list) words >> name >> name;   // the count's type, the entries' type, then the name
+        if(name == "x" || name == "y" || name == "z") {
+          if(list)
+            throw Invalid_input(shown + ":" + std::to_string(line_number) + ": the vertex coordinate " + name +
+                                " is declared as a list");
+          coordinates += name;
+        }
       }
       if(word == "property" && (element == "face" || element == "faces") && (words >> name >> count_type >> type) &&
          name == "list" && (words >> name) && (name == "vertex_indices" || name == "vertex_index"))
         index_type = type;
     }
+    for(const char axis : {'x', 'y', 'z'})
+      if(vertices && coordinates.find(axis) == std::string::npos)
+        throw Invalid_input(shown + ": the vertices have no property " + std::string(1, axis));
     // CGAL's reader takes 32-bit indices only, and says so on std::cerr alone.
     if(faces && index_type.empty())
       throw Invalid_input(shown + ": the faces have no list property vertex_indices (or vertex_index)");
