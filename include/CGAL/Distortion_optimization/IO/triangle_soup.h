@@ -577,8 +577,10 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
 /// strict readers `read_OFF()` and `read_OBJ()`; `.ply`, `.stl` and `.ts` (GOCAD) with CGAL's
 /// `CGAL::IO::read_PLY()`, `read_STL()` and `read_GOCAD()` (ASCII or binary), which keep the order
 /// of vertices and faces, followed by the same checks: finite coordinates, triangles only, indices
-/// in range, no face repeating a vertex. (An STL file lists each triangle's corners: CGAL's reader
-/// merges equal points into one vertex.)
+/// in range, no face repeating a vertex. A PLY header is checked first (every property after its
+/// element, vertices with scalar x, y and z, faces with 32-bit vertex_indices), where CGAL's reader
+/// would crash or misread. (An STL file lists each triangle's corners: CGAL's reader merges equal
+/// points into one vertex.)
 /// \throws Invalid_input if the file cannot be opened, has another extension, is malformed or has
 /// no triangle.
 inline Triangle_soup read_triangle_soup(const std::string& path)
