@@ -4,6 +4,7 @@
 #   distortion_add_example(NAME src... [LIBRARIES lib...])
 #   distortion_add_benchmark(NAME src... [LIBRARIES lib...])
 #   distortion_add_tool(NAME src... [LIBRARIES lib...])
+#   distortion_add_library(NAME src...)   a static library the above may link
 #
 # Each creates the executable target NAME linking CGAL::Distortion_optimization (plus
 # CGAL::TBB_support and the define DISTORTION_OPTIMIZATION_HAS_TBB when TBB was found), with
@@ -66,4 +67,17 @@ endfunction()
 
 function(distortion_add_tool name)
   _distortion_add_executable(${name} bin ${ARGN})
+endfunction()
+
+# A static library of compiled templates for the programs above: linked to the package (and TBB,
+# with its define, PUBLIC: the programs that link it must see the same types).
+function(distortion_add_library name)
+  add_library(${name} STATIC ${ARGN})
+  target_link_libraries(${name} PUBLIC CGAL::Distortion_optimization)
+  if(TARGET CGAL::TBB_support)
+    target_link_libraries(${name} PUBLIC CGAL::TBB_support)
+    target_compile_definitions(${name} PUBLIC DISTORTION_OPTIMIZATION_HAS_TBB)
+  endif()
+  target_compile_options(${name} PRIVATE
+    "$<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall;-Wextra;-Wno-maybe-uninitialized>")
 endfunction()

@@ -9,7 +9,6 @@
 #define DISTORTION_OPTIMIZATION_BENCHMARK_BENCH_HELPERS_H
 
 #include "../../examples/Distortion_optimization/volume_examples.h"
-#include "../../test/Distortion_optimization/instantiations/extern_mesh_interior.h"
 
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>

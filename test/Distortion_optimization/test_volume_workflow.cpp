@@ -6,7 +6,6 @@
 // kept, sizes that follow the input's scale, determinism, bad input), then the package's start
 // maps and optimizer on the result.
 
-#include "instantiations/extern_mesh_interior.h"
 #include "test_complexes.h"
 
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The Mesh_3 front end of mesh_interior() compiled once for the tests and benchmarks that mesh a
+// The Mesh_3 front end of mesh_interior() compiled once for the files of the build that mesh a
 // Surface_mesh (mesh_interior.cpp defines it): the same as extern_templates.h, for the body that
 // runs Mesh_3 and its repairs. Each call of mesh_interior() still reads its named parameters.
 
-#ifndef DISTORTION_OPTIMIZATION_TEST_EXTERN_MESH_INTERIOR_H
-#define DISTORTION_OPTIMIZATION_TEST_EXTERN_MESH_INTERIOR_H
+#ifndef DISTORTION_OPTIMIZATION_EXTERN_MESH_INTERIOR_H
+#define DISTORTION_OPTIMIZATION_EXTERN_MESH_INTERIOR_H
 
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 
@@ -35,4 +35,4 @@ DISTORTION_MESH_INTERIOR()
 } // namespace Distortion_optimization
 } // namespace CGAL
 
-#endif // DISTORTION_OPTIMIZATION_TEST_EXTERN_MESH_INTERIOR_H
+#endif // DISTORTION_OPTIMIZATION_EXTERN_MESH_INTERIOR_H

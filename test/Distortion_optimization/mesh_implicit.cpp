@@ -3,7 +3,7 @@
 //
 // The tests' Mesh_3 meshes (test_mesh_3.h), compiled once.
 
-#include "../test_mesh_3.h"
+#include "test_mesh_3.h"
 
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/make_mesh_3.h>
