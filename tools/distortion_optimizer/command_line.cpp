@@ -220,8 +220,9 @@ std::vector<double> parse_point(const std::string& option, const std::string& te
   return x;
 }
 
-// Inputs must be files (a folder reads as an empty file), and no output may name an input or
-// another output: writing over the start map in place is refused too (write elsewhere, then move).
+// Inputs must be regular files (a folder reads as an empty file, /dev/zero never ends), and no
+// output may name an input or another output: writing over the start map in place is refused too
+// (write elsewhere, then move).
 void check_files(const Command_line& c)
 {
   std::vector<std::pair<std::string, std::string>> inputs = {{"--source", c.source}}, outputs = {{"--output", c.output}};
@@ -244,7 +245,11 @@ void check_files(const Command_line& c)
   const auto shown = [](const std::string& path) { return printable(path); };
   for(const auto& [option, path] : inputs) {
     struct stat s;
-    if(::stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) throw Usage_error(option + " " + shown(path) + " is a folder, not a file");
+    if(::stat(path.c_str(), &s) != 0) continue;   // the reader names it
+    if(S_ISDIR(s.st_mode)) throw Usage_error(option + " " + shown(path) + " is a folder, not a file");
+    // A device or a pipe may never end (/dev/zero) or be read once only: the readers read files.
+    if(!S_ISREG(s.st_mode))
+      throw Usage_error(option + " " + shown(path) + " is not a regular file (a device, a pipe or a socket)");
   }
   for(std::size_t i = 0; i < outputs.size(); ++i) {
     const auto& [option, path] = outputs[i];

@@ -51,7 +51,11 @@ struct Command_line
   bool svg_both = false;                     // the source beside the map in --svg
   bool volume_mode() const { return !start.empty(); }
   bool ideal() const { return reference == "ideal"; }
-  bool slides() const { return boundary == "slide" || (boundary.empty() && start == "ball"); }
+  // The ball start slides by default, unless --fix none or FILE frees the boundary.
+  bool slides() const
+  {
+    return boundary == "slide" || (boundary.empty() && start == "ball" && !(fix_given && fix != "boundary"));
+  }
 };
 
 // The usage text (--help).

@@ -11,17 +11,41 @@
 #include "staged_output.h"
 #include "tool.h"
 
+#include <future>
 #include <iostream>
 #include <memory>
 #include <new>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 namespace distortion_optimizer {
 
 namespace {
 
-// All outputs or none: each output gets a temporary file beside it before any input is read (so a
+// TBB starts its threads inside the run, where a failure cannot be caught (the program aborts):
+// they are started once here, all alive at once, so that a process or memory limit that cannot
+// give them is a message.
+void check_threads(std::size_t n)
+{
+  std::promise<void> go;
+  const std::shared_future<void> started = go.get_future().share();
+  std::vector<std::thread> threads;
+  bool failed = false;
+  try {
+    while(threads.size() + 1 < n) threads.emplace_back([started] { started.wait(); });
+  } catch(const std::system_error&) {
+    failed = true;
+  }
+  go.set_value();
+  for(std::thread& t : threads) t.join();
+  if(failed)
+    throw DO::Invalid_input("--threads " + std::to_string(n) + ": cannot start that many threads here (only " +
+                            std::to_string(threads.size() + 1) + " under this machine's limits): give fewer");
+}
+
+// All outputs or none: each output gets a temporary name beside it before any input is read (so a
 // folder that cannot be written fails first), the run writes there, and the files are renamed
 // only when every one was written (after the outputs into devices, whose writes may still fail).
 int run(const Command_line& c)
@@ -41,6 +65,7 @@ int run(const Command_line& c)
       files[i] = std::make_unique<Temporary_file>(c.*outputs[i], suffix(c.*outputs[i]));
       staged.*outputs[i] = files[i]->path();
     }
+  check_threads(c.threads);
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   int status = 0;
   try {

@@ -18,6 +18,10 @@
 #include <cstring>
 #include <fstream>
 
+#include <random>
+
+#include <cerrno>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -92,16 +96,19 @@ Temporary_file::Temporary_file(const std::string& path, const std::string& suffi
     const char* tmp = std::getenv("TMPDIR");
     folder = std::string(tmp != nullptr && *tmp != 0 ? tmp : "/tmp") + "/";
   }
-  std::string name = folder + "." + base + ".XXXXXX" + suffix;
-  const int fd = ::mkstemps(&name[0], static_cast<int>(suffix.size()));
-  if(fd < 0) throw Invalid_input(printable(path) + ": cannot write (does the folder exist, and is it writable?)");
+  // Only named here, so that no file exists before the run writes it (a run killed earlier leaves
+  // nothing); the folder is checked now, so that an output that cannot be written fails first.
+  if(::access(folder.empty() ? "." : folder.c_str(), W_OK | X_OK) != 0)
+    throw Invalid_input(printable(path) + ": cannot write (does the folder exist, and is it writable?)");
+  std::random_device device;
+  const auto key = (static_cast<unsigned long long>(device()) << 32) ^ device() ^ static_cast<unsigned long long>(::getpid());
+  struct stat existing;
+  for(unsigned long long attempt = 0;; ++attempt) {
+    path_ = folder + "." + base + "." + std::to_string(key + attempt) + suffix;
+    if(::lstat(path_.c_str(), &existing) != 0 && errno == ENOENT) break;
+    if(attempt == 64) throw Invalid_input(printable(path) + ": cannot write (no free temporary name beside it)");
+  }
   streamed_ = special;
-  // mkstemp makes the file private (0600); give it the mode a new file of the user would have.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
-  path_ = name;
   slot_ = Temporary_registry::get().add(path_);
 }
 
@@ -115,14 +122,30 @@ void Temporary_file::rename_to(const std::string& target)
 {
   bool special = false;
   const std::string place = destination(target, &special);
+  struct stat written;
+  if(::stat(path_.c_str(), &written) != 0) std::ofstream(path_, std::ios::binary);   // an output the run left empty
   if(special) {
-    {
-      std::ifstream in(path_, std::ios::binary);
-      std::ofstream out(place, std::ios::binary);
-      if(!in || !out || !(out << in.rdbuf()) || !out.flush()) throw Invalid_input(printable(target) + ": write error");
-    }
+    // Not blocking on a named pipe that no program reads: then the open fails (ENXIO).
+    const int out = ::open(place.c_str(), O_WRONLY | O_NONBLOCK);
+    if(out < 0)
+      throw Invalid_input(printable(target) + (errno == ENXIO ? ": a pipe that no program reads" : ": cannot write"));
+    ::fcntl(out, F_SETFL, ::fcntl(out, F_GETFL) & ~O_NONBLOCK);
+    std::ifstream in(path_, std::ios::binary);
+    bool good = static_cast<bool>(in);
+    for(char buffer[1 << 16]; good && in.read(buffer, sizeof buffer).gcount() > 0;)
+      for(const char *at = buffer, *end = buffer + in.gcount(); good && at < end;) {
+        const ssize_t n = ::write(out, at, static_cast<std::size_t>(end - at));
+        if(n < 0 && errno == EINTR) continue;
+        good = n > 0;
+        at += n > 0 ? n : 0;
+      }
+    good = ::close(out) == 0 && good;
+    if(!good) throw Invalid_input(printable(target) + ": write error");
     return;   // the temporary file is removed by the destructor
   }
+  // An existing output keeps its mode (a read-only file stays read-only).
+  struct stat old;
+  if(::stat(place.c_str(), &old) == 0) ::chmod(path_.c_str(), old.st_mode & 07777);
   if(std::rename(path_.c_str(), place.c_str()) != 0) throw Invalid_input(printable(target) + ": cannot replace the file");
   Temporary_registry::get().remove(slot_);
   slot_ = -1;
@@ -132,7 +155,11 @@ void Temporary_file::rename_to(const std::string& target)
 void remove_temporary_files_on_signals()
 {
   Temporary_registry::get();   // constructed before any handler may run
-  for(int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, unlink_temporaries_and_reraise);
+  // Every signal that ends the program by default and can be caught, crashes included: the files
+  // being written go first (SIGKILL cannot be caught: the files exist only while written).
+  for(int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ,
+                    SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+    std::signal(signal, unlink_temporaries_and_reraise);
   // A closed standard output (`... | head`) must not kill the tool after its files are written:
   // writes to it fail instead, and the exit status is the run's.
   std::signal(SIGPIPE, SIG_IGN);

@@ -12,9 +12,9 @@
 
 namespace distortion_optimizer {
 
-// A new, empty file with a unique name beside `path` (in its folder, hidden, ending in `suffix`),
-// removed when this object is destroyed unless it was renamed; while it exists it is also removed
-// if the program is interrupted after remove_temporary_files_on_signals(). Where `path` is a
+// A unique name beside `path` (in its folder, hidden, ending in `suffix`) that the run writes, not
+// yet a file; the file is removed when this object is destroyed unless it was renamed, and also if
+// the program is ended by a signal after remove_temporary_files_on_signals(). Where `path` is a
 // symbolic link, the file it names is replaced and the link kept; where it is a device or a pipe
 // (/dev/null, /dev/stdout), the temporary file is made in the temporary folder (TMPDIR, else /tmp)
 // and its bytes are written into `path` at the end, which is never replaced.
@@ -32,9 +32,10 @@ public:
   // Whether the bytes go into a device or a pipe at rename_to() (a write that may fail, such as
   // /dev/full) rather than by renaming the file.
   bool is_streamed() const { return streamed_; }
-  // Renames the file to `target` (the file a symbolic link names; into a device or a pipe, its
-  // bytes are written), after which it is no longer temporary. Throws Invalid_input if the rename
-  // or the write fails (the temporary file is then removed).
+  // Renames the file to `target` (the file a symbolic link names, whose mode it takes if it
+  // exists; into a device or a pipe, its bytes are written), after which it is no longer
+  // temporary. Throws Invalid_input if the rename or the write fails, or if `target` is a named
+  // pipe that no program reads (the temporary file is then removed).
   void rename_to(const std::string& target);
 
 private:
@@ -43,9 +44,10 @@ private:
   bool kept_ = false, streamed_ = false;
 };
 
-// Installs handlers of SIGINT, SIGTERM and SIGHUP that remove the temporary files being
-// written and then end the program as the signal would have; ignores SIGPIPE (a write into a
-// closed pipe fails instead).
+// Installs handlers of the signals that end the program (SIGINT, SIGTERM, SIGHUP, SIGQUIT, the
+// user, timer and limit signals, and the crashes) that remove the temporary files being written
+// and then end the program as the signal would have; ignores SIGPIPE (a write into a closed pipe
+// fails instead).
 void remove_temporary_files_on_signals();
 
 } // namespace distortion_optimizer

@@ -39,9 +39,10 @@ struct Tool_run
   std::string output;
 };
 
-Tool_run run(const std::string& arguments)
+// A shell command's exit status and output (standard output and error).
+Tool_run run_in_shell(const std::string& command_line)
 {
-  const std::string command = std::string(DISTORTION_OPTIMIZER) + " " + arguments + " 2>&1";
+  const std::string command = "{ " + command_line + "; } 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string out;
   char buffer[4096];
@@ -49,6 +50,8 @@ Tool_run run(const std::string& arguments)
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
+
+Tool_run run(const std::string& arguments) { return run_in_shell(std::string(DISTORTION_OPTIMIZER) + " " + arguments); }
 
 std::string temp(const std::string& name)
 {
@@ -888,9 +891,19 @@ TEST(CommandLine, CountsMeasuresAndFoldersAreCheckedBeforeAnyWork)
     EXPECT_FALSE(exists(o)) << bad;
   }
   // The measure is checked before the meshes are read: a missing source is not what fails.
-  const Tool_run result = run("--source " + temp("no_such_file.off") + " --output " + o + " --measure 'conformal*'");
+  Tool_run result = run("--source " + temp("no_such_file.off") + " --output " + o + " --measure 'conformal*'");
   EXPECT_EQ(result.status, 2) << result.output;
   EXPECT_NE(result.output.find("empty factor"), std::string::npos) << result.output;
+  // An input that is no regular file (/dev/zero never ends) is refused before it is read (issue 66).
+  for(const std::string extension : {"ply", "stl", "ts", "off"}) {
+    const std::string zero = temp("zero." + extension);
+    std::remove(zero.c_str());
+    ASSERT_EQ(::symlink("/dev/zero", zero.c_str()), 0);
+    result = run("--source " + zero + " --output " + o);
+    EXPECT_EQ(result.status, 2) << result.output;
+    EXPECT_NE(result.output.find(zero + " is not a regular file"), std::string::npos) << result.output;
+    std::remove(zero.c_str());
+  }
 }
 
 TEST(CommandLine, NoOutputNamesAnInputOrAnotherOutput)
@@ -1010,6 +1023,26 @@ TEST(CommandLine, OutputsGoThroughLinksAndIntoDevices)
   EXPECT_EQ(result.status, 1) << result.output;
   EXPECT_NE(result.output.find("a symbolic link to nothing"), std::string::npos) << result.output;
   EXPECT_FALSE(exists(o));
+  // A named pipe that no program reads fails the run at the end instead of waiting for a reader
+  // without end (issue 66); nothing is written.
+  const std::string fifo = temp("fifo6l.svg");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  result = run("--source " + s + " --target " + t + " --output " + o + " --svg " + fifo);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find(fifo + ": a pipe that no program reads"), std::string::npos) << result.output;
+  EXPECT_FALSE(exists(o));
+  EXPECT_EQ(leftovers(o), 0u);
+  std::remove(fifo.c_str());
+  // A read-only output is replaced and stays read-only.
+  std::ofstream(o) << "old\n";
+  ASSERT_EQ(::chmod(o.c_str(), 0444), 0);
+  result = run("--source " + s + " --target " + t + " --output " + o);
+  ASSERT_EQ(result.status, 0) << result.output;
+  ASSERT_EQ(::stat(o.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0444u);
+  EXPECT_NE(slurp(o), "old\n");
+  std::remove(o.c_str());
 }
 
 TEST(CommandLine, AnEndlessLineInTheFixFileCostsNoMemory)
@@ -1195,6 +1228,42 @@ TEST(CommandLine, VolumeModeMapsAClosedSurfaceOntoTheBallAndCarriesASurface)
     const auto& p = source.points[v];
     const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     for(int k = 0; k < 3; ++k) EXPECT_EQ(radial_map.points[v][k], n * p[k]);
+  }
+
+  // --fix none frees the ball start's boundary, as --help says (it slid on the sphere, issue 66):
+  // the boundary leaves the sphere, no cell inverted.
+  const std::string o4 = temp("ball_free.mesh");
+  const Tool_run free_ball = run("--source " + m + " --start ball --fix none --output " + o4 + " --iterations 5");
+  ASSERT_EQ(free_ball.status, 0) << free_ball.output;
+  const IO::Tetrahedron_soup freed = IO::read_tetrahedron_soup(o4);
+  EXPECT_EQ(non_positive_tetrahedra(freed), 0u);
+  double off_sphere = 0;
+  for(std::size_t v : boundary) {
+    const auto& q = freed.points[v];
+    off_sphere = std::max(off_sphere, std::abs(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]) - 1.));
+  }
+  EXPECT_GT(off_sphere, 1e-3);
+}
+
+// The temporary files exist only while the outputs are written: a run killed while it computes
+// (SIGKILL cannot be caught, nor the out-of-memory killer) leaves nothing behind (issue 66).
+TEST(CommandLine, ARunKilledWhileItComputesLeavesNoFile)
+{
+  const std::string cube = temp("cube_killed.off"), o = temp("killed.mesh"), m = temp("killed_source.mesh"),
+                    r = temp("killed.json");
+  write_cube(cube);
+  for(const std::string& f : {o, m, r}) std::remove(f.c_str());
+  for(const char* signal : {"KILL", "USR1"}) {
+    const std::string command = "timeout --preserve-status -s " + std::string(signal) + " 1 " + std::string(DISTORTION_OPTIMIZER) +
+                                " --source " + cube + " --start ball --cell-size 0.04 --output " + o + " --mesh-output " +
+                                m + " --report " + r + " > /dev/null 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_GE(WEXITSTATUS(status), 128) << signal << ": the run was to be ended by the signal";
+    for(const std::string& f : {o, m, r}) {
+      EXPECT_FALSE(exists(f)) << signal << " " << f;
+      EXPECT_EQ(leftovers(f), 0u) << signal << " " << f;
+    }
   }
 }
 
@@ -1636,6 +1705,21 @@ TEST(CommandLine, EmptyOptionValuesAreUsageErrors)
 
 // A closed standard output does not kill the tool once its files are written: the exit status is
 // the run's (it was SIGPIPE's, 141, with every output in place).
+// Threads that the machine's limits cannot give are a message, not an abort in TBB (issue 66):
+// 1000 threads' stacks do not fit in 3 GB of address space.
+TEST(CommandLine, ThreadsThatCannotStartAreAMessage)
+{
+  const std::string s = temp("s_threads.off"), t = temp("t_threads.off"), o = temp("o_threads.off");
+  write_planar_pair(s, t);
+  std::remove(o.c_str());
+  const Tool_run result = run_in_shell("ulimit -v 3000000; " + std::string(DISTORTION_OPTIMIZER) + " --source " + s +
+                                       " --target " + t + " --output " + o + " --threads 1000");
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("--threads 1000: cannot start that many threads here"), std::string::npos) << result.output;
+  EXPECT_FALSE(exists(o));
+  EXPECT_EQ(leftovers(o), 0u);
+}
+
 TEST(CommandLine, AClosedStandardOutputLeavesTheExitStatusToTheRun)
 {
   const std::string s = temp("s_pipe.off"), t = temp("t_pipe.off"), o = temp("o_pipe.off"), r = temp("r_pipe.json");
