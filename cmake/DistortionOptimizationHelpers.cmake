@@ -18,16 +18,22 @@
 
 include_guard(GLOBAL)
 
-function(_distortion_setup_target name output_subdir)
-  target_link_libraries(${name} PRIVATE CGAL::Distortion_optimization)
+# Links `name` to the package (and to TBB, with its define), with the package's warnings; `scope`
+# is PRIVATE for a program, PUBLIC for a library whose users must see the same types.
+function(_distortion_link_package name scope)
+  target_link_libraries(${name} ${scope} CGAL::Distortion_optimization)
   if(TARGET CGAL::TBB_support)
-    target_link_libraries(${name} PRIVATE CGAL::TBB_support)
-    target_compile_definitions(${name} PRIVATE DISTORTION_OPTIMIZATION_HAS_TBB)
+    target_link_libraries(${name} ${scope} CGAL::TBB_support)
+    target_compile_definitions(${name} ${scope} DISTORTION_OPTIMIZATION_HAS_TBB)
   endif()
-  target_compile_definitions(${name} PRIVATE
-    "DISTORTION_OPTIMIZATION_DATA_DIR=\"${DISTORTION_OPTIMIZATION_DATA_DIR}\"")
   target_compile_options(${name} PRIVATE
     "$<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall;-Wextra;-Wno-maybe-uninitialized>")
+endfunction()
+
+function(_distortion_setup_target name output_subdir)
+  _distortion_link_package(${name} PRIVATE)
+  target_compile_definitions(${name} PRIVATE
+    "DISTORTION_OPTIMIZATION_DATA_DIR=\"${DISTORTION_OPTIMIZATION_DATA_DIR}\"")
   # The "$<0:>" generator expression stops multi-config generators from appending a
   # per-configuration subdirectory, so the binary path is the same everywhere.
   set_target_properties(${name} PROPERTIES
@@ -73,11 +79,5 @@ endfunction()
 # with its define, PUBLIC: the programs that link it must see the same types).
 function(distortion_add_library name)
   add_library(${name} STATIC ${ARGN})
-  target_link_libraries(${name} PUBLIC CGAL::Distortion_optimization)
-  if(TARGET CGAL::TBB_support)
-    target_link_libraries(${name} PUBLIC CGAL::TBB_support)
-    target_compile_definitions(${name} PUBLIC DISTORTION_OPTIMIZATION_HAS_TBB)
-  endif()
-  target_compile_options(${name} PRIVATE
-    "$<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall;-Wextra;-Wno-maybe-uninitialized>")
+  _distortion_link_package(${name} PUBLIC)
 endfunction()
