@@ -1052,9 +1052,41 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   std::string no_x = header;
   no_x.erase(no_x.find("property float x\n"), 17);
   EXPECT_EQ(message("no_x.ply", no_x + "0 0\n0 0\n1 0\n1 0\n3 0 1 2\n"), ": the vertices have no property x");
+  // List counts longer than the file, which CGAL's reader made room for (13 GB from 200 bytes), or
+  // negative (hostile round 3); a coordinate too large for the computations.
+  std::string uint_count = header;
+  uint_count.replace(uint_count.find("list uchar int"), 14, "list uint int");
+  EXPECT_EQ(message("huge_count.ply", uint_count + points + "4294967280 0 1 2\n"),
+            ": face 0 has a list of 4294967280 entries, more than the file holds");
+  EXPECT_EQ(message("negative_count.ply", header + points + "-5 0 1 2\n"), ": face 0 has a list of -5 entries");
+  std::string minus_five = header, beyond = header;
+  minus_five.replace(minus_five.find("vertex 4"), 8, "vertex -5");
+  beyond.replace(beyond.find("vertex 4"), 8, "vertex 18446744073709551621");
+  EXPECT_EQ(message("minus_five.ply", minus_five + points + "3 0 1 2\n"),
+            ":3: element vertex has the count '-5', not a number of elements");
+  EXPECT_EQ(message("beyond.ply", beyond + points + "3 0 1 2\n"),
+            ":3: element vertex announces 18446744073709551621 instances, more than the file holds");
+  std::string huge_binary = binary.substr(0, binary.find("end_header\n") + 11);
+  huge_binary.replace(huge_binary.find("list uchar int"), 14, "list uint int");
+  const float flat[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::uint32_t huge = 0xFFFFFFF0u;
+  huge_binary.append(reinterpret_cast<const char*>(flat), sizeof flat);
+  huge_binary.append(reinterpret_cast<const char*>(&huge), sizeof huge);
+  huge_binary.append(reinterpret_cast<const char*>(face), sizeof face);
+  EXPECT_EQ(message("huge_count_binary.ply", huge_binary), ": face 0 has a list of 4294967280 entries, more than the file holds");
+  std::string doubles = header;
+  for(std::size_t at; (at = doubles.find("float")) != std::string::npos;) doubles.replace(at, 5, "double");
+  EXPECT_EQ(message("far.ply", doubles + "0 0 1e300\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"),
+            ": vertex 0 has a coordinate of magnitude beyond 1e100 (1e+300)");
   const std::string ts = "GOCAD TSurf 1\nHEADER {\nname:t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n";
   EXPECT_EQ(message("ok.ts", ts), "no error");
   EXPECT_EQ(message("garbage.ts", ts + "garbage here\n"), ":11: content after the last surface's END");
+  std::string four = ts;
+  four.replace(four.find("TRGL 1 2 3"), 10, "TRGL 1 2 3 4");
+  EXPECT_EQ(message("four.ts", four), ":9: TRGL with 4 indices (a triangle has 3)");
+  EXPECT_EQ(message("dots.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 1.0.0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                                "endloop\nendfacet\nendsolid s\n"),
+            ": facet 0 has the coordinate '1.0.0', not a number");
   std::string crlf;
   for(char c : ts) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   EXPECT_EQ(message("crlf.ts", crlf), "no error");   // Windows line ends

@@ -29,7 +29,12 @@ namespace {
 DO::Volume_embedding<C3t3> embed(const Command_line& c, const C3t3& c3t3, const Mesh& mesh)
 {
   try {
-    return DO::embed_surface_in_volume(c3t3, mesh, DO::parameters::snap_to_volume(c.snap));
+    DO::Volume_embedding<C3t3> e = DO::embed_surface_in_volume(c3t3, mesh, DO::parameters::snap_to_volume(c.snap));
+    // Snapped, a surface wholly outside would be flattened onto the boundary (far away: onto one point).
+    if(e.snapped_points.size() == num_vertices(mesh))
+      throw DO::Invalid_input(c.carry + ": all its " + std::to_string(num_vertices(mesh)) +
+                              " vertices are outside the volume, and --snap would flatten it onto the volume's boundary");
+    return e;
   } catch(const DO::Points_outside_volume& e) {
     throw DO::Invalid_input(c.carry + ": " + e.listing() + " (--snap moves such points onto its boundary)");
   }

@@ -148,7 +148,8 @@ std::string usage()
   "               barrier's); the default when stderr is a terminal; --quiet: none\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
   "               started, and write that map (the report says stopped_by_time_limit); a limit\n"
-  "               reached while untangling, cells still inverted, fails (status 1)\n"
+  "               reached while untangling, cells still inverted, fails (status 1); in the volume\n"
+  "               mode, Mesh_3 stops at SECONDS too, which fails (status 1)\n"
   "exit status: 0 done; 1 bad input or a failed run, nothing written; 2 a usage error\n";
 }
 
@@ -361,6 +362,10 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("--harmonic-start is on or off, not '" + c.harmonic_start + "'");
   const std::string in = extension(c.source), out = extension(c.output);
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
+  // The ideal mode writes the improved mesh itself, in the source's kind.
+  if(c.ideal() && (tetrahedral_file(c.source) ? out != "mesh" : out != "off" && out != "obj"))
+    throw Usage_error(std::string("--reference ideal writes the improved mesh: --output must end in ") +
+                      (tetrahedral_file(c.source) ? ".mesh" : ".off or .obj"));
   if(tetrahedra ? (out != "mesh" && out != "vtu") : (out != "off" && out != "obj" && out != "vtu"))
     throw Usage_error(tetrahedra ? "--output must end in .mesh or .vtu for a tetrahedral map"
                                  : "--output must end in .off, .obj or .vtu");
@@ -378,7 +383,6 @@ Command_line parse(int argc, char** argv)
   for(const auto& [option, given] : volume_only)
     if(given && !c.volume_mode() && !(option == "--boundary" && c.ideal()))
       throw Usage_error(option + " needs --start (the volume mode)");
-  if(c.ideal() && out == "vtu") throw Usage_error("--reference ideal writes the improved mesh: .off, .obj or .mesh");
   if(c.ideal() && c.boundary == "slide" && !tetrahedral_file(c.source))
     throw Usage_error("--boundary slide with --reference ideal needs a tetrahedral mesh (.mesh)");
   if(tetrahedral_file(c.source) && (c.cell_size > 0)) throw Usage_error("--cell-size is for a surface source (a .mesh source is already meshed)");

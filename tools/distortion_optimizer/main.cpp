@@ -81,10 +81,14 @@ int run(const Command_line& c)
       message = printable(c.source) + ": " + message;
     throw DO::Invalid_input(message);
   }
-  // Devices and pipes first: writing into them may fail (/dev/full), renaming a file hardly can.
-  for(const bool streamed : {true, false})
+  // Devices and pipes first: writing into them may fail (/dev/full), renaming a file hardly can;
+  // the renames are the commit, which no signal interrupts.
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    if(files[i] && files[i]->is_streamed()) files[i]->rename_to(c.*outputs[i]);
+  commit_uninterrupted([&] {
     for(std::size_t i = 0; i < outputs.size(); ++i)
-      if(files[i] && files[i]->is_streamed() == streamed) files[i]->rename_to(c.*outputs[i]);
+      if(files[i] && !files[i]->is_streamed()) files[i]->rename_to(c.*outputs[i]);
+  });
   return status;
 }
 

@@ -152,17 +152,38 @@ void Temporary_file::rename_to(const std::string& target)
   kept_ = true;
 }
 
+// The signals that end the program by default and can be caught, sent by others (the crashes
+// are handled too, but cannot be held back).
+constexpr int sent_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ};
+
 void remove_temporary_files_on_signals()
 {
   Temporary_registry::get();   // constructed before any handler may run
-  // Every signal that ends the program by default and can be caught, crashes included: the files
-  // being written go first (SIGKILL cannot be caught: the files exist only while written).
-  for(int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ,
-                    SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
-    std::signal(signal, unlink_temporaries_and_reraise);
+  // The files being written go first (SIGKILL cannot be caught: the files exist only while written).
+  for(int signal : sent_signals) std::signal(signal, unlink_temporaries_and_reraise);
+  for(int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, unlink_temporaries_and_reraise);
   // A closed standard output (`... | head`) must not kill the tool after its files are written:
   // writes to it fail instead, and the exit status is the run's.
   std::signal(SIGPIPE, SIG_IGN);
+}
+
+void commit_uninterrupted(const std::function<void()>& commit)
+{
+  sigset_t held, before;
+  sigemptyset(&held);
+  for(int signal : sent_signals) sigaddset(&held, signal);
+  ::sigprocmask(SIG_BLOCK, &held, &before);
+  const auto release = [&] {
+    for(int signal : sent_signals) std::signal(signal, SIG_IGN);   // discards those pending
+    ::sigprocmask(SIG_SETMASK, &before, nullptr);
+  };
+  try {
+    commit();
+  } catch(...) {
+    release();
+    throw;
+  }
+  release();
 }
 
 } // namespace distortion_optimizer

@@ -8,6 +8,7 @@
 #ifndef DISTORTION_OPTIMIZER_STAGED_OUTPUT_H
 #define DISTORTION_OPTIMIZER_STAGED_OUTPUT_H
 
+#include <functional>
 #include <string>
 
 namespace distortion_optimizer {
@@ -49,6 +50,12 @@ private:
 // and then end the program as the signal would have; ignores SIGPIPE (a write into a closed pipe
 // fails instead).
 void remove_temporary_files_on_signals();
+
+// Runs `commit` (the renames that put the outputs in place) with the signals of
+// remove_temporary_files_on_signals() held back, then ignores those that came meanwhile: a
+// signal cannot end the program between two renames, and the exit status is the run's, as the
+// files say (a run whose outputs are all in place does not end with 143).
+void commit_uninterrupted(const std::function<void()>& commit);
 
 } // namespace distortion_optimizer
 

@@ -23,8 +23,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace distortion_optimizer {
 
@@ -64,11 +70,46 @@ bool is_disk(const Mesh& mesh)
   return cycles.size() == 1 && euler == 1;
 }
 
+// The bytes this process may still take: the smaller of the memory the system has available and
+// what the address-space limit leaves (ulimit -v); the largest double if neither is known.
+double memory_available()
+{
+  double available = std::numeric_limits<double>::max();
+  std::ifstream meminfo("/proc/meminfo");
+  for(std::string key; meminfo >> key;) {
+    double kilobytes = 0;
+    if(key == "MemAvailable:" && (meminfo >> kilobytes)) available = 1024 * kilobytes;
+    meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  rlimit limit;
+  if(::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    double used = 0;   // the address space taken so far (the first field of statm, in pages)
+    std::ifstream("/proc/self/statm") >> used;
+    available = std::min(available, double(limit.rlim_cur) - used * double(::sysconf(_SC_PAGESIZE)));
+  }
+  return available;
+}
+
+// A subdivision whose result cannot fit in memory is refused before the run rather than when
+// the memory runs out: about 340 bytes per triangle of the result, measured at levels 3 and 4
+// on mushroom (4,608 triangles: 97 and 386 MB at their peak).
+void check_subdivision_fits(const Command_line& c, std::size_t cells)
+{
+  const double triangles = double(cells) * std::pow(4., double(c.subdivide)), needed = 340 * triangles;
+  const double available = memory_available();
+  if(needed > available)
+    throw DO::Invalid_input("--subdivide " + std::to_string(c.subdivide) + ": about " + DO::internal::shown_number(triangles) +
+                            " triangles, about " + DO::internal::shown_number(needed / 1e9) + " GB, more than the " +
+                            DO::internal::shown_number(std::max(available, 0.) / 1e9) +
+                            " GB this run can still take: give fewer levels");
+}
+
 } // namespace
 
 int run_triangles(const Command_line& c)
 {
   const DO::IO::Triangle_soup source = DO::IO::read_triangle_soup(c.source);
+  if(c.subdivide > 0) check_subdivision_fits(c, source.cells.size());
   Mesh mesh = to_mesh(source, c.source);
   bool planar = true;
   for(const auto& p : source.points) planar = planar && p[2] == 0;

@@ -22,8 +22,10 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
   const Mesh surface = to_mesh(DO::IO::read_triangle_soup(c.source), c.source);
   DO::IO::Tetrahedron_soup soup;
   try {
-    DO::tetrahedra_from_c3t3(c.cell_size > 0 ? DO::mesh_interior(surface, DO::parameters::cell_size(c.cell_size))
-                                             : DO::mesh_interior(surface), soup.points, soup.cells);
+    namespace P = DO::parameters;
+    const auto limit = P::meshing_time_limit(c.time_limit);   // 0: none
+    DO::tetrahedra_from_c3t3(c.cell_size > 0 ? DO::mesh_interior(surface, P::cell_size(c.cell_size, limit))
+                                             : DO::mesh_interior(surface, limit), soup.points, soup.cells);
     soup.labels.assign(soup.cells.size(), 1);
   } catch(const DO::Invalid_input& e) {
     // The library's remedies name its parameters; the tool's user has --cell-size (the facet size,

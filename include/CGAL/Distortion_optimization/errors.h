@@ -6,7 +6,9 @@
 
 #include <CGAL/license/Distortion_optimization.h>
 
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -68,6 +70,32 @@ public:
 private:
   std::size_t cell_;
 };
+
+namespace internal {
+
+// A number in a message, as printf's %g writes it (std::to_string writes 4.9e-324 as 0.000000).
+inline std::string shown_number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// The largest magnitude of a coordinate that the package takes: products of three coordinates
+// (volumes, orientation determinants, squared areas of scaled cells) must stay finite in double
+// precision, which a coordinate near 1e103 already breaks.
+constexpr double largest_coordinate = 1e100;
+
+// Why `x` is not a coordinate the package takes ("a non-finite coordinate", "a coordinate of
+// magnitude beyond 1e100 (...)"), or empty if it is one.
+inline std::string coordinate_problem(double x)
+{
+  if(!std::isfinite(x)) return "a non-finite coordinate";
+  if(std::abs(x) <= largest_coordinate) return {};
+  return "a coordinate of magnitude beyond 1e100 (" + shown_number(x) + ")";
+}
+
+} // namespace internal
 
 } // namespace Distortion_optimization
 } // namespace CGAL

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 
@@ -86,6 +87,7 @@ enum lloyd_iterations_t { lloyd_iterations };
 enum perturb_slivers_t { perturb_slivers };
 enum exude_slivers_t { exude_slivers };
 enum maximum_number_of_vertices_t { maximum_number_of_vertices };
+enum meshing_time_limit_t { meshing_time_limit };
 } // namespace internal_np
 
 namespace parameters {
@@ -138,6 +140,9 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(exude_slivers_t, exude_slivers)
 /// refining, not while protecting the sharp edges, so the error may come only after a long
 /// protection phase.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(maximum_number_of_vertices_t, maximum_number_of_vertices)
+/// `mesh_interior()`: the seconds after which Mesh_3's refinement is stopped and the function
+/// throws; 0 (the default) for no limit.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(meshing_time_limit_t, meshing_time_limit)
 
 
 } // namespace parameters
@@ -147,8 +152,7 @@ namespace internal {
 inline void check_size(double value, const char* name)
 {
   if(!(value > 0) || !std::isfinite(value))
-    throw Invalid_input(std::string("mesh_interior: ") + name + " must be a positive finite number, not " +
-                        std::to_string(value));
+    throw Invalid_input(std::string("mesh_interior: ") + name + " must be a positive finite number, not " + shown_number(value));
 }
 
 // The user's sizes where given, else the defaults (each one following the one it derives from).
@@ -178,15 +182,15 @@ Interior_mesh_sizes read_interior_mesh_sizes(double volume, double area, double 
   check_size(s.edge_size, "the edge size");
   s.facet_angle = choose_parameter(get_parameter(np, internal_np::facet_angle), D::facet_angle);
   if(!(s.facet_angle > 0 && s.facet_angle <= 30))
-    throw Invalid_input("mesh_interior: the facet angle must be in (0, 30] degrees, not " + std::to_string(s.facet_angle));
+    throw Invalid_input("mesh_interior: the facet angle must be in (0, 30] degrees, not " + shown_number(s.facet_angle));
   s.cell_radius_edge_ratio = choose_parameter(get_parameter(np, internal_np::cell_radius_edge_ratio), D::radius_edge_ratio);
   if(!(s.cell_radius_edge_ratio >= 2) || !std::isfinite(s.cell_radius_edge_ratio))
     throw Invalid_input("mesh_interior: the cell radius-edge ratio must be a finite number >= 2, not " +
-                        std::to_string(s.cell_radius_edge_ratio));
+                        shown_number(s.cell_radius_edge_ratio));
   s.sharp_edge_angle = choose_parameter(get_parameter(np, internal_np::sharp_edge_angle), D::sharp_edge_angle);
   if(!(s.sharp_edge_angle > 0 && s.sharp_edge_angle <= 180))
     throw Invalid_input("mesh_interior: the sharp edge angle must be in (0, 180] degrees, not " +
-                        std::to_string(s.sharp_edge_angle));
+                        shown_number(s.sharp_edge_angle));
   return s;
 }
 
@@ -423,11 +427,21 @@ h / 10.
                     vertices than this maximum (when it is given and not 0), or than 10^7 (when it is not
                     given), are refused before Mesh_3 starts.}
   \cgalParamNEnd
+
+  \cgalParamNBegin{meshing_time_limit}
+    \cgalParamDescription{the seconds after which Mesh_3's refinement (with the protection of the sharp edges) is
+                          stopped and this function throws; `0` for no limit
+                          (`Distortion_optimization::parameters::meshing_time_limit()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0`}
+    \cgalParamExtra{A complex that Mesh_3 finishes within the limit is the same as without it; the repairs after
+                    the refinement are not timed.}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns the complex, of type `Interior_mesh<GeomTraits>::C3T3`.
 \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
-that is not a triangle, a non-finite coordinate, a border edge, a non-manifold vertex, a
+that is not a triangle, a non-finite coordinate or one beyond 1e100 in magnitude, a border edge, a non-manifold vertex, a
 degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
 (its mean thickness, 2 volume / area, is smaller) or has a component that is (2 |volume| / area
 of that component; the error names one of its faces), has two components closer than the facet
@@ -437,7 +451,7 @@ such as the two sides of a slit (Mesh_3 would protect them with balls no larger 
 for minutes or without end; the error names their vertices), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
-`maximum_number_of_vertices`, if the complex has no cell or a component of the surface gets no
+`maximum_number_of_vertices` or runs longer than `meshing_time_limit`, if the complex has no cell or a component of the surface gets no
 tetrahedron even when seeded (the error names one of its faces), if the boundary of the complex
 is not a 2-manifold after the changes of sides above (tetrahedra that touch only along an edge
 or at a vertex, where parts of the surface are closer than the sizes: the error gives the place;
@@ -464,6 +478,10 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
   settings.lloyd_iterations = choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0);
   settings.perturb_slivers = choose_parameter(get_parameter(np, internal_np::perturb_slivers), false);
   settings.exude_slivers = choose_parameter(get_parameter(np, internal_np::exude_slivers), false);
+  settings.time_limit = choose_parameter(get_parameter(np, internal_np::meshing_time_limit), 0.);
+  if(!(settings.time_limit >= 0) || !std::isfinite(settings.time_limit))
+    throw Invalid_input("mesh_interior: the meshing time limit must be a number of seconds >= 0, not " +
+                        internal::shown_number(settings.time_limit));
   if(settings.odt_iterations < 0 || settings.lloyd_iterations < 0)
     throw Invalid_input("mesh_interior: the numbers of ODT and Lloyd iterations must be >= 0");
   const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +

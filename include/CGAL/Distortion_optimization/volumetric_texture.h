@@ -407,7 +407,8 @@ private:
 ///
 /// \throws Points_outside_volume (an `Invalid_input`) for points in no cell of the complex,
 ///   without `snap_to_volume`; the message gives their number and the first indices
-/// \throws Invalid_input for a point with a non-finite coordinate or a complex with no cell
+/// \throws Invalid_input for a point with a non-finite coordinate or one beyond 1e100 in magnitude,
+/// or a complex with no cell
 template <class C3T3, class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Volume_embedding<C3T3> embed_in_volume(const C3T3& c3t3, const PointRange& points,
                                        const NamedParameters& np = CGAL::parameters::default_values())
@@ -420,8 +421,9 @@ Volume_embedding<C3T3> embed_in_volume(const C3T3& c3t3, const PointRange& point
   std::vector<Point> p;
   for(const auto& q : points) {
     const double x = CGAL::to_double(q.x()), y = CGAL::to_double(q.y()), z = CGAL::to_double(q.z());
-    if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-      throw Invalid_input("point " + std::to_string(p.size()) + " has a non-finite coordinate");
+    for(const double c : {x, y, z})
+      if(const std::string problem = internal::coordinate_problem(c); !problem.empty())
+        throw Invalid_input("point " + std::to_string(p.size()) + " has " + problem);
     p.emplace_back(x, y, z);
   }
   Volume_embedding<C3T3> e;

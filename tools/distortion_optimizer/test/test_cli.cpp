@@ -77,26 +77,31 @@ std::string slurp(const std::string& path)
 }
 
 // A planar 12 x 12 grid (source) and the same grid with a noisy interior (target).
-void write_planar_pair(const std::string& source, const std::string& target, double noise = 0.02)
+// The unit square cut into k x k squares, each into two counterclockwise triangles.
+IO::Triangle_soup unit_grid(int k)
 {
-  const int k = 12;
-  IO::Triangle_soup s, t;
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-noise, noise);
+  IO::Triangle_soup s;
   for(int j = 0; j <= k; ++j)
-    for(int i = 0; i <= k; ++i) {
-      const double x = double(i) / k, y = double(j) / k;
-      const bool border = i == 0 || j == 0 || i == k || j == k;
-      s.points.push_back({x, y, 0});
-      t.points.push_back({2 * x + (border ? 0 : u(rng)), y + (border ? 0 : u(rng)), 0});
-    }
+    for(int i = 0; i <= k; ++i) s.points.push_back({double(i) / k, double(j) / k, 0});
   for(int j = 0; j < k; ++j)
     for(int i = 0; i < k; ++i) {
       const std::size_t a = j * (k + 1) + i, b = a + 1, c = a + k + 1, d = c + 1;
       s.cells.push_back({a, b, d});
       s.cells.push_back({a, d, c});
     }
-  t.cells = s.cells;
+  return s;
+}
+
+void write_planar_pair(const std::string& source, const std::string& target, double noise = 0.02)
+{
+  const IO::Triangle_soup s = unit_grid(12);
+  IO::Triangle_soup t = s;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-noise, noise);
+  for(auto& p : t.points) {
+    const bool border = p[0] == 0 || p[1] == 0 || p[0] == 1 || p[1] == 1;
+    p = {2 * p[0] + (border ? 0 : u(rng)), p[1] + (border ? 0 : u(rng)), 0};
+  }
   IO::write_triangle_soup(source, s);
   IO::write_triangle_soup(target, t);
 }
@@ -279,19 +284,22 @@ TEST(CommandLine, TutteStartForADiskWithoutTarget)
   EXPECT_EQ(IO::read_triangle_soup(o).cells, IO::read_triangle_soup(data("nefertiti.off")).cells);
 }
 
+// The triangles of a planar soup that are not counterclockwise (exact predicate).
+static std::size_t inverted(const IO::Triangle_soup& soup)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::size_t count = 0;
+  auto p = [&](std::size_t i) { return K::Point_2(soup.points[i][0], soup.points[i][1]); };
+  for(const auto& c : soup.cells) count += CGAL::orientation(p(c[0]), p(c[1]), p(c[2])) != CGAL::LEFT_TURN;
+  return count;
+}
+
 TEST(CommandLine, UntangleThenOptimize)
 {
   // Interior noise of 0.2 on a grid of spacing 1/12: a tangled start.
   const std::string s = temp("s_tangled.off"), t = temp("t_tangled.off"), o = temp("o_tangled.off"),
                     r = temp("r_tangled.json");
   write_planar_pair(s, t, 0.2);
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  auto inverted = [](const IO::Triangle_soup& soup) {
-    std::size_t count = 0;
-    auto p = [&](std::size_t i) { return K::Point_2(soup.points[i][0], soup.points[i][1]); };
-    for(const auto& c : soup.cells) count += CGAL::orientation(p(c[0]), p(c[1]), p(c[2])) != CGAL::LEFT_TURN;
-    return count;
-  };
   const std::size_t tangled = inverted(IO::read_triangle_soup(t));
   ASSERT_GT(tangled, 10u);
   // Without --untangle: today's clear error, nothing written.
@@ -337,6 +345,25 @@ TEST(CommandLine, UntangleThenOptimize)
     const double x = IO::read_triangle_soup(s).points[i][0], y = IO::read_triangle_soup(s).points[i][1];
     if(x == 0 || y == 0 || x == 1 || y == 1) { EXPECT_EQ(out.points[i], in.points[i]); }
   }
+}
+
+// A mirror image with nothing fixed is reflected at once (hostile round 3: 84 s and a thousand
+// rounds for this 30 x 30 grid, 1,800 triangles, all inverted); the result keeps no cell inverted.
+TEST(CommandLine, AMirrorImageWithAFreeBorderIsReflectedAtOnce)
+{
+  const std::string s = temp("grid30.off"), t = temp("grid30_mirror.off"), o = temp("grid30_out.off"), r = temp("grid30.json");
+  const IO::Triangle_soup grid = unit_grid(30);
+  IO::Triangle_soup mirror = grid;
+  for(auto& p : mirror.points) p[0] = -p[0];
+  IO::write_triangle_soup(s, grid);
+  IO::write_triangle_soup(t, mirror);
+  const Tool_run result = run("--source " + s + " --target " + t + " --output " + o + " --untangle --fix none --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string json = slurp(r);
+  EXPECT_EQ(json_value(json, "inverted_start_cells"), 1800) << json;
+  EXPECT_EQ(json_value(json, "untangle_iterations"), 0) << json;
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0) << json;
+  EXPECT_EQ(inverted(IO::read_triangle_soup(o)), 0u);
 }
 
 TEST(CommandLine, ProgressLinesAndTimeLimit)
@@ -1267,6 +1294,20 @@ TEST(CommandLine, ARunKilledWhileItComputesLeavesNoFile)
   }
 }
 
+// --time-limit covers the meshing too (issue 66): Mesh_3 stops at the limit (it would take minutes
+// at this size), and the run fails with nothing written.
+TEST(CommandLine, TheTimeLimitStopsTheMeshing)
+{
+  const std::string cube = temp("cube_limit.off"), o = temp("limit.mesh");
+  write_cube(cube);
+  std::remove(o.c_str());
+  const Tool_run result = run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("Mesh_3 did not finish within the time limit of 0.5 s"), std::string::npos) << result.output;
+  EXPECT_FALSE(exists(o));
+  EXPECT_EQ(leftovers(o), 0u);
+}
+
 TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
 {
   const std::string cube = temp("cube2.off"), o = temp("vol.mesh"), m = temp("vol_source.mesh"), c = temp("vol_carried.off");
@@ -1319,6 +1360,15 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   write_octahedron(outside, 0.5, 0.8);   // reaches x = 1.3
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + outside + " --carry-output " + c, 1,
                  "1 point is outside the volume (in no cell of the complex): 0 (--snap moves such points onto its boundary)");
+  // Wholly outside, --snap would flatten it onto the boundary (issue 66); a coordinate too large
+  // for the computations (it crashed the snap) is refused as the file is read.
+  const std::string away = temp("away.off"), far = temp("far.off");
+  write_octahedron(away, 0.5, 10);
+  expect_failure("--source " + cube + " --start ball" + base + " --carry " + away + " --carry-output " + c + " --snap", 1,
+                 "all its 6 vertices are outside the volume, and --snap would flatten it onto the volume's boundary");
+  write_octahedron(far, 0.5, 1e307);
+  expect_failure("--source " + cube + " --start ball" + base + " --carry " + far + " --carry-output " + c + " --snap", 1,
+                 "is beyond 1e+100 in magnitude");
   // The command line.
   expect_failure("--source " + cube + " --start sphere" + base, 2, "--start is ball or radial");
   expect_failure("--source " + cube + " --start ball --target " + cube + base, 2, "give one");
@@ -1574,7 +1624,9 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
         {"--source " + planar + " --reference ideal --target " + planar, "no --target"},
         {"--source " + planar + " --reference ideal --boundary slide", "needs a tetrahedral mesh"},
         {"--source " + planar + " --reference regular", "--reference is ideal"},
-        {"--source " + m + " --reference ideal --output " + temp("ideal.vtu"), ".off, .obj or .mesh"}}) {
+        {"--source " + m + " --reference ideal --output " + temp("ideal.vtu"), "--output must end in .mesh"},
+        {"--source " + planar + " --reference ideal --output " + temp("ideal.vtu"), "--output must end in .off or .obj"},
+        {"--source " + planar + " --reference ideal --output " + temp("ideal.mesh"), "--output must end in .off or .obj"}}) {
     const std::string out = arguments.find("--output") == std::string::npos ? " --output " + temp("ideal_bad.off") : "";
     const Tool_run bad = run(arguments + out);
     EXPECT_EQ(bad.status, 2) << arguments << "\n" << bad.output;
@@ -1583,6 +1635,25 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
 }
 
 // --subdivide (issue 16.3): the optimized map and its source refined together; linear keeps the energy.
+// A subdivision that cannot fit in the memory this run may take is refused before the run
+// (issue 66): under a 1 GB address space, five levels of mushroom (4.7 million triangles, about
+// 1.6 GB) are; three levels (74K) are not.
+TEST(CommandLine, ASubdivisionThatCannotFitIsRefusedAtOnce)
+{
+  const std::string o = temp("mushroom_sub.obj"), s2 = temp("mushroom_sub_source.off");
+  std::remove(o.c_str());
+  const std::string limited = "ulimit -v 1000000; " + std::string(DISTORTION_OPTIMIZER) + " --source " + data("mushroom.off") +
+                              " --output " + o + " --subdivided-source " + s2 + " --subdivide ";
+  Tool_run result = run_in_shell(limited + "5");
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("--subdivide 5: about 4.71859e+06 triangles"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("give fewer levels"), std::string::npos) << result.output;
+  EXPECT_FALSE(exists(o));
+  result = run_in_shell(limited + "3 --iterations 2");
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(exists(o));
+}
+
 TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
 {
   const std::string s = temp("sub_source.off"), t = temp("sub_target.off"), o = temp("sub_out.off"),

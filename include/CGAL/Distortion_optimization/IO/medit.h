@@ -290,7 +290,7 @@ private:
 /// Vertices or Tetrahedra section, volume cells other than tetrahedra, a section the reader does not know, a negative count, a count
 /// larger than the rest of the file can hold, a line longer than 1 MiB, a truncated section, a
 /// token that is not a number (a NUL byte or other garbage in it included), a non-finite
-/// coordinate, a vertex index out of range, a tetrahedron repeating a vertex, or anything after
+/// coordinate or one beyond 1e100 in magnitude, a vertex index out of range, a tetrahedron repeating a vertex, or anything after
 /// End.
 inline Tetrahedron_soup read_MEDIT_soup(std::istream& in, const std::string& name = "MEDIT input")
 {

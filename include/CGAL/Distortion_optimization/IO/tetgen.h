@@ -36,7 +36,7 @@ namespace IO {
 /// \throws Invalid_input naming the file and line for: a bad header (dimension other than 3, 0
 /// points, i.e. points kept in a .poly file, nodes per tetrahedron other than 4 or 10), a
 /// truncated file or extra lines, an index out of sequence, a token that is not a number, a
-/// non-finite coordinate, a node index out of range, a tetrahedron repeating a vertex, or a region
+/// non-finite coordinate or one beyond 1e100 in magnitude, a node index out of range, a tetrahedron repeating a vertex, or a region
 /// attribute that is not an integer.
 inline Tetrahedron_soup read_TetGen(std::istream& node, std::istream& ele, const std::string& node_name = "TetGen .node input",
                                     const std::string& ele_name = "TetGen .ele input")
@@ -92,7 +92,7 @@ inline Tetrahedron_soup read_TetGen(std::istream& node, std::istream& ele, const
         if(tet[a] == tet[b]) cells.fail("tetrahedron " + std::to_string(c) + " repeats a vertex");
     soup.cells.push_back(tet);
     if(regions == 1) {
-      const double region = cells.coordinate(t[1 + corners]);
+      const double region = cells.coordinate(t[1 + corners], "region attribute");
       if(region != std::floor(region) || std::abs(region) > 2147483647.)
         cells.fail("region attribute " + t[1 + corners] + " is not an integer label");
       soup.labels.push_back(static_cast<int>(region));

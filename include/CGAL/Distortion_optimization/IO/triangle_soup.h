@@ -104,8 +104,9 @@ inline long long obj_index(long long index, std::size_t count)
 /// skipped. A UTF-8 byte order mark is skipped. `name` is used in error messages.
 /// \throws Invalid_input naming the line for a missing header or count, a count line without
 /// exactly three counts, a line longer than 1 MiB, a truncated file, a token that is not a number
-/// (a NUL byte or other garbage in it included), a non-finite coordinate, a face that is not a
-/// triangle, an index out of range, or anything after the announced faces.
+/// (a NUL byte or other garbage in it included), a non-finite coordinate or one beyond 1e100 in
+/// magnitude (products of three coordinates must stay finite), a face that is not a triangle, an
+/// index out of range, or anything after the announced faces.
 inline Triangle_soup read_OFF(std::istream& in, const std::string& name = "OFF input")
 {
   internal::Line_reader reader(in, name);
@@ -263,10 +264,13 @@ inline std::vector<std::array<double, 2>> per_vertex_texture_coordinates(const T
 
 namespace internal {
 
-// A binary PLY body must hold exactly the elements its header announces: CGAL's reader stops
-// after them, silently dropping whatever follows (a face more than the header counts). Walks the
-// body by the properties' sizes (a list by its count); a header it cannot follow is left to CGAL.
-inline void check_binary_PLY_length(const std::string& bytes, const std::string& shown, std::size_t header_end)
+// A PLY body must hold exactly the elements its header announces: CGAL's reader stops after them,
+// silently dropping whatever follows (a face more than the header counts), and its lists as long
+// as their counts say: it makes room for a count before reading the entries (a count of 2^32 - 16
+// in a 200-byte file took 13 GB). Walks a binary body by the properties' sizes (a list by its
+// count), an ASCII one line by line (an element per line, as the ASCII check of the number of
+// lines in check_bytes_for_CGAL() has it); a header it cannot follow is left to CGAL.
+inline void check_PLY_body(const std::string& bytes, const std::string& shown, std::size_t header_end, bool ascii)
 {
   const auto size_of = [](const std::string& type) -> std::size_t {
     if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
@@ -276,7 +280,7 @@ inline void check_binary_PLY_length(const std::string& bytes, const std::string&
     return 0;
   };
   struct Property { std::size_t size = 0, count_size = 0, item_size = 0; };   // a list: count_size > 0
-  struct Element { unsigned long long count = 0; std::vector<Property> properties; };
+  struct Element { std::string name; unsigned long long count = 0; std::vector<Property> properties; };
   std::vector<Element> elements;
   bool big_endian = false;
   std::istringstream header(bytes.substr(0, header_end));
@@ -287,7 +291,7 @@ inline void check_binary_PLY_length(const std::string& bytes, const std::string&
     if(word == "format") big_endian = (words >> a) && a == "binary_big_endian";
     else if(word == "element") {
       elements.emplace_back();
-      if(!(words >> a >> elements.back().count)) return;
+      if(!(words >> elements.back().name >> elements.back().count)) return;
     } else if(word == "property") {
       if(elements.empty() || !(words >> a)) return;
       Property p;
@@ -305,6 +309,40 @@ inline void check_binary_PLY_length(const std::string& bytes, const std::string&
   const std::size_t body = bytes.find('\n', header_end);
   if(body == std::string::npos) return;
   std::size_t at = body + 1;
+  const auto too_long = [&](const Element& element, unsigned long long i, const std::string& count) {
+    throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has a list of " + count +
+                        " entries, more than the file holds");
+  };
+  if(ascii) {
+    std::size_t e = 0;
+    unsigned long long i = 0;
+    while(at < bytes.size()) {
+      std::size_t end = bytes.find('\n', at);
+      if(end == std::string::npos) end = bytes.size();
+      std::istringstream words(bytes.substr(at, end - at));
+      at = end + 1;
+      while(e < elements.size() && i == elements[e].count) e += 1, i = 0;
+      std::string token;
+      if(e == elements.size() || !(words >> token)) continue;   // blank, or after the elements: checked elsewhere
+      for(const Property& p : elements[e].properties) {
+        if(p.count_size == 0) {
+          words >> token;
+          continue;
+        }
+        // Each entry takes a character and a separator at least.
+        if(token.find('-') != std::string::npos) {
+          if(token.find_first_not_of("-0") != std::string::npos)
+            throw Invalid_input(shown + ": " + elements[e].name + " " + std::to_string(i) + " has a list of " + token + " entries");
+        } else if(std::strtoull(token.c_str(), nullptr, 10) > (bytes.size() - std::min(at, bytes.size())) / 2 + 1 + words.str().size()) {
+          too_long(elements[e], i, token);
+        }
+        for(unsigned long long n = std::strtoull(token.c_str(), nullptr, 10); n > 0 && (words >> token); --n) {}
+        words >> token;
+      }
+      i += 1;
+    }
+    return;
+  }
   const auto count_at = [&](std::size_t position, std::size_t size) {
     unsigned long long value = 0;
     for(std::size_t k = 0; k < size; ++k)
@@ -329,7 +367,7 @@ inline void check_binary_PLY_length(const std::string& bytes, const std::string&
         if(at + p.count_size > bytes.size()) return;
         const unsigned long long n = count_at(at, p.count_size);
         at += p.count_size;
-        if(n > bytes.size() / p.item_size) return;
+        if(n > (bytes.size() - at) / p.item_size) too_long(element, i, std::to_string(n));
         at += static_cast<std::size_t>(n) * p.item_size;
         if(at > bytes.size()) return;
       }
@@ -385,6 +423,14 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       if(!(words >> word)) continue;
       if(word == "ATOM" || word == "PATOM")
         throw Invalid_input(shown + ":" + std::to_string(i + 1) + ": " + word + " (a vertex repeated by id) is not supported");
+      if(word == "TRGL") {   // CGAL's reader takes the first three indices and drops the others
+        std::size_t indices = 0;
+        for(std::string index; words >> index;) ++indices;
+        if(indices != 3)
+          throw Invalid_input(shown + ":" + std::to_string(i + 1) + ": TRGL with " + std::to_string(indices) +
+                              " indices (a triangle has 3)");
+        continue;
+      }
       if((word != "VRTX" && word != "PVRTX") || !(words >> id)) continue;
       if(!first && id != expected)
         throw Invalid_input(shown + ":" + std::to_string(i + 1) + ": vertex id " + std::to_string(id) + " where " +
@@ -406,7 +452,15 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       unsigned long long count = 0;
       words >> word;
       if(word == "format") ascii = (words >> name) && name == "ascii";
-      if(word == "element" && (words >> element >> count)) {
+      std::string count_token;
+      if(word == "element" && (words >> element >> count_token)) {
+        // A count that is no count (-5 read as 2^64 - 5) or larger than the file could hold (an
+        // instance takes a byte at least) is refused here: CGAL's reader makes room for it first.
+        const std::string where = shown + ":" + std::to_string(line_number) + ": element " + element;
+        if(count_token.find_first_not_of("0123456789") != std::string::npos)
+          throw Invalid_input(where + " has the count '" + count_token + "', not a number of elements");
+        if(count_token.size() > 18 || (count = std::stoull(count_token)) > bytes.size())
+          throw Invalid_input(where + " announces " + count_token + " instances, more than the file holds");
         elements += static_cast<std::size_t>(count);
         faces = faces || element == "face" || element == "faces";
         vertices = vertices || element == "vertex";
@@ -436,7 +490,8 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       throw Invalid_input(shown + ": the faces have no list property vertex_indices (or vertex_index)");
     if(faces && index_type != "int" && index_type != "uint" && index_type != "int32" && index_type != "uint32")
       throw Invalid_input(shown + ": face vertex indices of type " + printable(index_type) + " (CGAL's PLY reader takes int or uint)");
-    if(!ascii) return check_binary_PLY_length(bytes, shown, header_end);
+    check_PLY_body(bytes, shown, header_end, ascii);
+    if(!ascii) return;
     // The lines after end_header's, numbered in the whole file.
     const std::size_t first = 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + header_end, '\n'));
     const std::size_t body = bytes.find('\n', header_end);
@@ -494,9 +549,14 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
         break;
       }
       if(w != "vertex") continue;
-      for(int k = 0; k < 3 && (words >> w); ++k)
-        if(!std::isfinite(std::strtod(w.c_str(), nullptr)))
+      for(int k = 0; k < 3 && (words >> w); ++k) {
+        // CGAL's reader takes the number that begins a token ("1.0.0" as 1.0, then fails on ".0").
+        double x = 0;
+        if(!parse_number(w, x))
+          throw Invalid_input(shown + ": facet " + std::to_string(facet) + " has the coordinate '" + w + "', not a number");
+        if(!std::isfinite(x))
           throw Invalid_input(shown + ": facet " + std::to_string(facet) + " has a non-finite coordinate '" + w + "'");
+      }
     }
   }
 }
@@ -551,8 +611,9 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
   Triangle_soup soup;
   for(std::size_t v = 0; v < points.size(); ++v) {
     const Point& p = points[v];
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Invalid_input(shown + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+    for(const double x : {p.x(), p.y(), p.z()})
+      if(const std::string problem = Distortion_optimization::internal::coordinate_problem(x); !problem.empty())
+        throw Invalid_input(shown + ": vertex " + std::to_string(v) + " has " + problem);
     soup.points.push_back({p.x(), p.y(), p.z()});
   }
   for(std::size_t f = 0; f < faces.size(); ++f) {
@@ -576,11 +637,14 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
 /// Reads a triangle mesh by the extension of `path`: `.off` and `.obj` with the package's own
 /// strict readers `read_OFF()` and `read_OBJ()`; `.ply`, `.stl` and `.ts` (GOCAD) with CGAL's
 /// `CGAL::IO::read_PLY()`, `read_STL()` and `read_GOCAD()` (ASCII or binary), which keep the order
-/// of vertices and faces, followed by the same checks: finite coordinates, triangles only, indices
-/// in range, no face repeating a vertex. A PLY header is checked first (every property after its
-/// element, vertices with scalar x, y and z, faces with 32-bit vertex_indices), where CGAL's reader
-/// would crash or misread. (An STL file lists each triangle's corners: CGAL's reader merges equal
-/// points into one vertex.)
+/// of vertices and faces, followed by the same checks: finite coordinates at most 1e100 in
+/// magnitude, triangles only, indices in range, no face repeating a vertex. Where CGAL's readers
+/// would crash, misread or take memory without bound, the bytes are checked first: a PLY header
+/// (every property after its element, element counts that are numbers the file can hold,
+/// vertices with scalar x, y and z, faces with 32-bit vertex_indices) and body (list counts the
+/// file can hold, nothing after the announced elements), an ASCII STL's coordinates (numbers),
+/// a GOCAD file's triangles (three indices each). (An STL file lists each triangle's corners:
+/// CGAL's reader merges equal points into one vertex.)
 /// \throws Invalid_input if the file cannot be opened, has another extension, is malformed or has
 /// no triangle.
 inline Triangle_soup read_triangle_soup(const std::string& path)

@@ -14,6 +14,7 @@
 
 #include <fstream>
 #include <istream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -67,7 +68,7 @@ inline std::vector<double> read_vertex_weights(std::istream& in, std::size_t cou
   while(reader.next(t)) {
     if(t.size() > 1) reader.fail("one weight per line");
     if(weights.size() == count) reader.fail("more weights than the " + std::to_string(count) + " vertices");
-    const double w = reader.coordinate(t[0], "weight");
+    const double w = reader.coordinate(t[0], "weight", std::numeric_limits<double>::max());
     if(!(w > 0)) reader.fail("weight " + t[0] + " is not positive");
     weights.push_back(w);
   }

@@ -261,6 +261,22 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
   report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
   if(throw_on_failure) check_tangled_cells_can_move(problem, traits);
+  // A mirror image: nothing holds the map (no vertex constrained, none sliding) and its cells'
+  // signed volumes sum below zero, so that the descent would have to turn it inside out (over a
+  // thousand rounds from some sizes). Its reflection is the same map the right way round.
+  const bool held = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end() ||
+                    std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; });
+  if(!held) {
+    double signed_volume = 0;
+    for(std::size_t c = 0; c < nc; ++c) signed_volume += problem.map.jacobian_determinant(c) * problem.map.rest_volume[c];
+    if(signed_volume < 0) {
+      for(Vector<n>& t : problem.map.target) t[n - 1] = -t[n - 1];
+      if((report.inverted_after = tangled()) == 0) {
+        report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return report;
+      }
+    }
+  }
   std::unique_ptr<Boundary_guard<n>> guard = make_boundary_guard(problem, options);
   Untangling_barrier barrier;
   barrier.reference_det = typical_jacobian_determinant(problem.map);

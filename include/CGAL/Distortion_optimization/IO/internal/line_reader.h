@@ -191,14 +191,19 @@ public:
     throw Invalid_input(printable(name_ + ":" + std::to_string(line_number_) + ": " + what));
   }
 
-  // `what` names the number in the message (a coordinate, a weight).
-  double coordinate(std::string_view token, const char* what = "coordinate") const
+  // `what` names the number in the message (a coordinate, a weight), whose magnitude is at most
+  // `largest` (for coordinates, the package's bound).
+  double coordinate(std::string_view token, const char* what = "coordinate",
+                    double largest = Distortion_optimization::internal::largest_coordinate) const
   {
     double x;
     if(!parse_number(token, x)) fail("'" + std::string(token) + "' is not a number");
     // strtod sets ERANGE for subnormals too (which the writers produce): only a result that is not
     // finite is refused.
     if(!std::isfinite(x)) fail(std::string(what) + " '" + std::string(token) + "' is not a finite number");
+    if(std::abs(x) > largest)
+      fail(std::string(what) + " '" + std::string(token) + "' is beyond " + Distortion_optimization::internal::shown_number(largest) +
+           " in magnitude");
     return x;
   }
 
@@ -305,7 +310,11 @@ public:
   }
 
   [[noreturn]] void fail(const std::string& what) const { lines_.fail(what); }
-  double coordinate(std::string_view token, const char* what = "coordinate") const { return lines_.coordinate(token, what); }
+  double coordinate(std::string_view token, const char* what = "coordinate",
+                    double largest = Distortion_optimization::internal::largest_coordinate) const
+  {
+    return lines_.coordinate(token, what, largest);
+  }
   long long integer(std::string_view token) const { return lines_.integer(token); }
 
   // Whether `token` is a whole number, integer or real (infinities and NaN included).

@@ -50,9 +50,14 @@
 #include <CGAL/refine_mesh_3.h>    // refine_mesh_3 and Mesh_3's optimizers
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdio>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace CGAL {
@@ -86,6 +91,48 @@ struct Mesh_3_settings
   double asked_vertices = 0;          // about as many vertices as the sizes ask for
   std::size_t maximum_vertices = 0;   // where Mesh_3 stops; 0 for no limit
   bool maximum_given = false;         // whether the user gave maximum_vertices
+  double time_limit = 0;              // seconds after which Mesh_3's refinement stops; 0 for none
+};
+
+// Raises Mesh_3's stop flag once `seconds` have passed (from a thread of its own, which the
+// destructor ends at once); 0 for never.
+class Mesh_3_deadline
+{
+public:
+  explicit Mesh_3_deadline(double seconds)
+  {
+    if(seconds > 0)
+      watchdog_ = std::thread([this, seconds] {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if(!ended_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return done_; })) stop_ = true;
+      });
+  }
+  Mesh_3_deadline(const Mesh_3_deadline&) = delete;
+  Mesh_3_deadline& operator=(const Mesh_3_deadline&) = delete;
+  ~Mesh_3_deadline()
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    ended_.notify_all();
+    if(watchdog_.joinable()) watchdog_.join();
+  }
+  std::atomic<bool>* flag() { return &stop_; }
+  // Throws if the time ran out (Mesh_3 then returned an unfinished complex).
+  void check(double seconds) const
+  {
+    if(stop_)
+      throw Invalid_input("mesh_interior: Mesh_3 did not finish within the time limit of " + shown_number(seconds) +
+                          " s (larger sizes ask for fewer tetrahedra)");
+  }
+
+private:
+  std::atomic<bool> stop_{false};
+  bool done_ = false;
+  std::mutex mutex_;
+  std::condition_variable ended_;
+  std::thread watchdog_;
 };
 
 // Sizes that ask for more vertices than memory holds are refused before Mesh_3 starts rather than
@@ -160,10 +207,13 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
                                           mp::cell_radius_edge_ratio = sizes.cell_radius_edge_ratio,
                                           mp::cell_size = s * sizes.cell_size);
   CGAL::Mesh_error_code error = CGAL::CGAL_MESH_3_NO_ERROR;
+  Mesh_3_deadline deadline(settings.time_limit);
   const auto options = mp::mesh_3_options(mp::maximal_number_of_vertices = settings.maximum_vertices,
-                                          mp::pointer_to_error_code = &error);
+                                          mp::pointer_to_error_code = &error,
+                                          mp::pointer_to_stop_atomic_boolean = deadline.flag());
   typename Types::C3T3 c3t3 = CGAL::make_mesh_3<typename Types::C3T3>(
     domain, criteria, mp::features(domain), mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(), options);
+  deadline.check(settings.time_limit);
   check_mesh_3_error(error, settings.maximum_vertices);
 
   // Components that Mesh_3's initial points missed get seeds, and the refinement goes on from the
@@ -174,6 +224,7 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
     insert_seeds(c3t3, seeds);
     CGAL::refine_mesh_3(c3t3, domain, criteria, mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(),
                         mp::no_reset_c3t3(), options);
+    deadline.check(settings.time_limit);
     check_mesh_3_error(error, settings.maximum_vertices);
     seeds_of_missed_components(c3t3, domain, checked.surface, checked.component, missed);
   }
