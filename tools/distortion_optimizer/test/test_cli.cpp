@@ -53,6 +53,16 @@ Tool_run run_in_shell(const std::string& command_line)
 
 Tool_run run(const std::string& arguments) { return run_in_shell(std::string(DISTORTION_OPTIMIZER) + " " + arguments); }
 
+// A run that failed on its input (status 1) with `fragment` in its message, leaving `output`
+// unwritten and no temporary file beside it.
+void expect_failed_cleanly(const Tool_run& result, const std::string& fragment, const std::string& output)
+{
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find(fragment), std::string::npos) << result.output;
+  EXPECT_FALSE(test_files::exists(output)) << output;
+  EXPECT_EQ(test_files::leftovers(output), 0u) << output;
+}
+
 std::string temp(const std::string& name)
 {
   return ::testing::TempDir() + "distortion_cli_" + name;
@@ -1036,11 +1046,8 @@ TEST(CommandLine, OutputsGoThroughLinksAndIntoDevices)
   // A device whose write fails fails the run before any file is renamed into place.
   if(::stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode)) {
     std::remove(o.c_str());
-    result = run("--source " + s + " --target " + t + " --output " + o + " --report /dev/full");
-    EXPECT_EQ(result.status, 1) << result.output;
-    EXPECT_NE(result.output.find("/dev/full: write error"), std::string::npos) << result.output;
-    EXPECT_FALSE(exists(o));
-    EXPECT_EQ(leftovers(o), 0u);
+    expect_failed_cleanly(run("--source " + s + " --target " + t + " --output " + o + " --report /dev/full"),
+                          "/dev/full: write error", o);
   }
   // A link to nothing is refused before any work, and nothing is written.
   std::remove(o.c_str());
@@ -1055,11 +1062,8 @@ TEST(CommandLine, OutputsGoThroughLinksAndIntoDevices)
   const std::string fifo = temp("fifo6l.svg");
   std::remove(fifo.c_str());
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
-  result = run("--source " + s + " --target " + t + " --output " + o + " --svg " + fifo);
-  EXPECT_EQ(result.status, 1) << result.output;
-  EXPECT_NE(result.output.find(fifo + ": a pipe that no program reads"), std::string::npos) << result.output;
-  EXPECT_FALSE(exists(o));
-  EXPECT_EQ(leftovers(o), 0u);
+  expect_failed_cleanly(run("--source " + s + " --target " + t + " --output " + o + " --svg " + fifo),
+                        fifo + ": a pipe that no program reads", o);
   std::remove(fifo.c_str());
   // A read-only output is replaced and stays read-only.
   std::ofstream(o) << "old\n";
@@ -1301,11 +1305,8 @@ TEST(CommandLine, TheTimeLimitStopsTheMeshing)
   const std::string cube = temp("cube_limit.off"), o = temp("limit.mesh");
   write_cube(cube);
   std::remove(o.c_str());
-  const Tool_run result = run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o);
-  EXPECT_EQ(result.status, 1) << result.output;
-  EXPECT_NE(result.output.find("Mesh_3 did not finish within the time limit of 0.5 s"), std::string::npos) << result.output;
-  EXPECT_FALSE(exists(o));
-  EXPECT_EQ(leftovers(o), 0u);
+  expect_failed_cleanly(run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o),
+                        "Mesh_3 did not finish within the time limit of 0.5 s", o);
 }
 
 TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
@@ -1783,12 +1784,9 @@ TEST(CommandLine, ThreadsThatCannotStartAreAMessage)
   const std::string s = temp("s_threads.off"), t = temp("t_threads.off"), o = temp("o_threads.off");
   write_planar_pair(s, t);
   std::remove(o.c_str());
-  const Tool_run result = run_in_shell("ulimit -v 3000000; " + std::string(DISTORTION_OPTIMIZER) + " --source " + s +
-                                       " --target " + t + " --output " + o + " --threads 1000");
-  EXPECT_EQ(result.status, 1) << result.output;
-  EXPECT_NE(result.output.find("--threads 1000: cannot start that many threads here"), std::string::npos) << result.output;
-  EXPECT_FALSE(exists(o));
-  EXPECT_EQ(leftovers(o), 0u);
+  expect_failed_cleanly(run_in_shell("ulimit -v 3000000; " + std::string(DISTORTION_OPTIMIZER) + " --source " + s +
+                                     " --target " + t + " --output " + o + " --threads 1000"),
+                        "--threads 1000: cannot start that many threads here", o);
 }
 
 TEST(CommandLine, AClosedStandardOutputLeavesTheExitStatusToTheRun)
