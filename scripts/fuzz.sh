@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the OFF, OBJ, Medit and TetGen readers, the vertex-list and vertex-weight readers (the
+# Fuzzes the OFF, OBJ, Medit and TetGen readers, the PLY, STL and GOCAD paths (the package's checks
+# of the bytes, then CGAL's readers), the vertex-list and vertex-weight readers (the
 # tool's --fix and --vertex-weights files) and the tool's command-line parser with libFuzzer
 # (clang), AddressSanitizer and UBSan.
 #   bash scripts/fuzz.sh [seconds per target, default 600] [target ...]
@@ -11,7 +12,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds="${1:-600}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT_soup read_TetGen_pair read_vertex_list command_line)
+[ "${#targets[@]}" -gt 0 ] || targets=(read_OFF read_OBJ read_MEDIT_soup read_TetGen_pair read_PLY read_STL read_GOCAD read_vertex_list command_line)
 
 missing=()
 for pkg in clang libclang-rt-14-dev libeigen3-dev libcgal-dev libboost-dev libgmp-dev libmpfr-dev libcgal-demo; do
@@ -53,6 +54,17 @@ for reader in "${targets[@]}"; do
         > "$dir/corpus/tet.tetgen"
       { printf '# 0-based, quadratic\n4 3 1 0\n0 0 0 0 5\n1 1 0 0 5\n2 0 1 0 5\n3 0 0 1 5\n'; printf '\0'
         printf '1 10 0\n0 0 1 2 3 0 1 2 3 0 1\n'; } > "$dir/corpus/quadratic.tetgen" ;;
+    read_PLY)
+      cp build/data/*.ply "$dir/corpus/" 2>/dev/null || true
+      printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$dir/corpus/triangle.ply"
+      { printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n'
+        printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\200\077\0\0\0\0\0\0\0\0\0\0\0\0\0\0\200\077\0\0\0\0'
+        printf '\003\0\0\0\0\001\0\0\0\002\0\0\0'; } > "$dir/corpus/triangle_binary.ply" ;;
+    read_STL)
+      cp build/data/*.stl "$dir/corpus/" 2>/dev/null || true
+      printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' > "$dir/corpus/triangle.stl" ;;
+    read_GOCAD)
+      printf 'GOCAD TSurf 1\nHEADER {\nname: t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n' > "$dir/corpus/triangle.ts" ;;
     read_vertex_list)
       printf '# pinned\n0\n12\n\n999\n' > "$dir/corpus/list.txt"
       printf '\xef\xbb\xbf3 # bom\n-1\n1000\n7 8\n' > "$dir/corpus/bad.txt" ;;

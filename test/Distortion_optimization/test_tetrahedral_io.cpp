@@ -1031,7 +1031,8 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   binary.append(reinterpret_cast<const char*>(&corners), 1);
   binary.append(reinterpret_cast<const char*>(face), sizeof face);
   EXPECT_EQ(message("nan.ply", binary), ": vertex 0 has a non-finite coordinate");
-  EXPECT_EQ(message("nan_text.ply", header + "0 0 nan\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"), ": CGAL's PLY reader could not read the file");
+  EXPECT_EQ(message("nan_text.ply", header + "0 0 nan\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"),
+            ": vertex 0 has 'nan' for z, not a number of type float");
   EXPECT_EQ(message("ok.ply", header + points + "3 0 1 2\n"), "no error");
   EXPECT_EQ(message("negative.ply", header + points + "3 0 1 -1\n"), ": face 0 has vertex index -1 out of range");
   // What CGAL's readers ignore: lines after the elements a header announces, or after the last END.
@@ -1049,6 +1050,24 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   list_x.replace(list_x.find("property float x"), 16, "property list uchar float x");
   EXPECT_EQ(message("list_x.ply", list_x + "1 0 0 0\n1 1 0 0\n1 1 1 0\n1 0 1 0\n3 0 1 2\n"),
             ":4: the vertex coordinate x is declared as a list");
+  std::string unknown = header, unknown_count = header;   // types CGAL's reader skips, misreading the rest
+  unknown.replace(unknown.find("property float y"), 16, "property float16 y");
+  unknown_count.replace(unknown_count.find("list uchar int"), 14, "list byte int");
+  EXPECT_EQ(message("unknown.ply", unknown + points + "3 0 1 2\n"), ":5: a property of type float16, which is no PLY type");
+  EXPECT_EQ(message("unknown_count.ply", unknown_count + points + "3 0 1 2\n"),
+            ":8: a property of type byte, which is no PLY type");
+  // What CGAL's reader took as a count it could not read (an uninitialized one, then room for that
+  // many entries: gigabytes), or read from where no header ends (fuzzing, issue 66).
+  std::string misspelt = header, float_count = header;
+  misspelt.replace(misspelt.find("format"), 6, "ftrmat");
+  float_count.replace(float_count.find("list uchar int"), 14, "list float int");
+  EXPECT_EQ(message("misspelt.ply", misspelt + points + "3 0 1 2\n"),
+            ":2: not the format line (format ascii, binary_little_endian or binary_big_endian, then a version)");
+  EXPECT_EQ(message("no_end.ply", header.substr(0, header.find("end_header")) + points + "3 0 1 2\n"),
+            ": the header has no end_header line");
+  EXPECT_EQ(message("float_count.ply", float_count + points + "3 0 1 2\n"), ":8: a list counted by a float (a count is an integer)");
+  EXPECT_EQ(message("ends.ply", header + points), ": the file ends before the 5 elements the header announces");
+  EXPECT_EQ(message("letter_count.ply", header + points + "x 0 1 2\n"), ": face 0 has 'x' for the count of vertex_indices, not a number of type uchar");
   std::string no_x = header;
   no_x.erase(no_x.find("property float x\n"), 17);
   EXPECT_EQ(message("no_x.ply", no_x + "0 0\n0 0\n1 0\n1 0\n3 0 1 2\n"), ": the vertices have no property x");
@@ -1074,6 +1093,14 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   huge_binary.append(reinterpret_cast<const char*>(&huge), sizeof huge);
   huge_binary.append(reinterpret_cast<const char*>(face), sizeof face);
   EXPECT_EQ(message("huge_count_binary.ply", huge_binary), ": face 0 has a list of 4294967280 entries, more than the file holds");
+  std::string signed_count = binary.substr(0, binary.find("end_header\n") + 11);   // a count of -5 in a char
+  signed_count.replace(signed_count.find("list uchar int"), 14, "list char int");
+  signed_count.append(reinterpret_cast<const char*>(flat), sizeof flat);
+  signed_count += '\xfb';
+  signed_count.append(reinterpret_cast<const char*>(face), sizeof face);
+  EXPECT_EQ(message("signed_count.ply", signed_count), ": face 0 has a list of -5 entries");
+  EXPECT_EQ(message("cut.ply", signed_count.substr(0, signed_count.size() - 13)),
+            ": the file ends before the 4 elements the header announces");
   std::string doubles = header;
   for(std::size_t at; (at = doubles.find("float")) != std::string::npos;) doubles.replace(at, 5, "double");
   EXPECT_EQ(message("far.ply", doubles + "0 0 1e300\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"),
@@ -1176,6 +1203,7 @@ TEST(Readers, FilesHoldExactlyWhatTheirHeadersAnnounce)
                            "endsolid s\n";
   EXPECT_EQ(message("text.stl", text), "no error");
   EXPECT_EQ(message("second.stl", text + text), ":10: content after endsolid");
+  EXPECT_EQ(message("last.stl", text + "\n  x"), ":11: content after endsolid");   // at the end: read out of bounds (fuzzing)
 
   const std::string ts = "GOCAD TSurf 1\nHEADER {\nname:t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n";
   std::string swapped = ts;

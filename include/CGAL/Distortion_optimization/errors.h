@@ -95,6 +95,15 @@ inline std::string coordinate_problem(double x)
   return "a coordinate of magnitude beyond 1e100 (" + shown_number(x) + ")";
 }
 
+// The problem of the first of a point's coordinates that has one, or empty.
+inline std::string coordinate_problem(double x, double y, double z)
+{
+  std::string problem = coordinate_problem(x);
+  if(problem.empty()) problem = coordinate_problem(y);
+  if(problem.empty()) problem = coordinate_problem(z);
+  return problem;
+}
+
 } // namespace internal
 
 } // namespace Distortion_optimization

@@ -421,9 +421,8 @@ Volume_embedding<C3T3> embed_in_volume(const C3T3& c3t3, const PointRange& point
   std::vector<Point> p;
   for(const auto& q : points) {
     const double x = CGAL::to_double(q.x()), y = CGAL::to_double(q.y()), z = CGAL::to_double(q.z());
-    for(const double c : {x, y, z})
-      if(const std::string problem = internal::coordinate_problem(c); !problem.empty())
-        throw Invalid_input("point " + std::to_string(p.size()) + " has " + problem);
+    if(const std::string problem = internal::coordinate_problem(x, y, z); !problem.empty())
+      throw Invalid_input("point " + std::to_string(p.size()) + " has " + problem);
     p.emplace_back(x, y, z);
   }
   Volume_embedding<C3T3> e;

@@ -1,5 +1,6 @@
 // libFuzzer target for the package's mesh readers. Build one binary per format with
-// -DFUZZ_READER=read_OFF, read_OBJ, read_MEDIT_soup or read_TetGen_pair (scripts/fuzz.sh does). Any input must either
+// -DFUZZ_READER=read_OFF, read_OBJ, read_MEDIT_soup, read_TetGen_pair, read_PLY, read_STL or
+// read_GOCAD (scripts/fuzz.sh does). Any input must either
 // parse into a consistent soup or raise Invalid_input: another exception, a crash, a hang or a
 // sanitizer report is a bug.
 
@@ -10,11 +11,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <iterator>
 #include <sstream>
 #include <string>
 
 #ifndef FUZZ_READER
-#error "define FUZZ_READER as read_OFF, read_OBJ, read_MEDIT_soup or read_TetGen_pair"
+#error "define FUZZ_READER as read_OFF, read_OBJ, read_MEDIT_soup, read_TetGen_pair, read_PLY, read_STL or read_GOCAD"
 #endif
 
 namespace IO = CGAL::Distortion_optimization::IO;
@@ -28,6 +30,17 @@ IO::Tetrahedron_soup read_TetGen_pair(std::istream& in, const std::string& name)
   std::istringstream node_in(node), ele_in(ele);
   return IO::read_TetGen(node_in, ele_in, name + ".node", name + ".ele");
 }
+
+// PLY, STL and GOCAD files go through CGAL's readers after the package's checks of their bytes,
+// as read_triangle_soup() reads them.
+IO::Triangle_soup read_bytes(std::istream& in, const std::string& name, const std::string& extension)
+{
+  std::string bytes(std::istreambuf_iterator<char>(in), {});
+  return IO::internal::read_with_CGAL(std::move(bytes), name, extension);
+}
+IO::Triangle_soup read_PLY(std::istream& in, const std::string& name) { return read_bytes(in, name, "ply"); }
+IO::Triangle_soup read_STL(std::istream& in, const std::string& name) { return read_bytes(in, name, "stl"); }
+IO::Triangle_soup read_GOCAD(std::istream& in, const std::string& name) { return read_bytes(in, name, "ts"); }
 
 template <class Cells>
 void check(const std::vector<std::array<double, 3>>& points, const Cells& cells)

@@ -35,6 +35,7 @@
 #include <istream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -264,127 +265,170 @@ inline std::vector<std::array<double, 2>> per_vertex_texture_coordinates(const T
 
 namespace internal {
 
-// A PLY body must hold exactly the elements its header announces: CGAL's reader stops after them,
-// silently dropping whatever follows (a face more than the header counts), and its lists as long
-// as their counts say: it makes room for a count before reading the entries (a count of 2^32 - 16
-// in a 200-byte file took 13 GB). Walks a binary body by the properties' sizes (a list by its
-// count), an ASCII one line by line (an element per line, as the ASCII check of the number of
-// lines in check_bytes_for_CGAL() has it); a header it cannot follow is left to CGAL.
-inline void check_PLY_body(const std::string& bytes, const std::string& shown, std::size_t header_end, bool ascii)
+// The size in bytes of a scalar type of the PLY format (by its old or its sized name); 0 for a
+// name that is no PLY type.
+inline std::size_t PLY_type_size(const std::string& type)
 {
-  const auto size_of = [](const std::string& type) -> std::size_t {
-    if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") return 4;
-    if(type == "double" || type == "float64") return 8;
-    return 0;
-  };
-  struct Property { std::size_t size = 0, count_size = 0, item_size = 0; };   // a list: count_size > 0
-  struct Element { std::string name; unsigned long long count = 0; std::vector<Property> properties; };
-  std::vector<Element> elements;
-  bool big_endian = false;
-  std::istringstream header(bytes.substr(0, header_end));
-  for(std::string line; std::getline(header, line);) {
-    std::istringstream words(line);
-    std::string word, a, b;
-    words >> word;
-    if(word == "format") big_endian = (words >> a) && a == "binary_big_endian";
-    else if(word == "element") {
-      elements.emplace_back();
-      if(!(words >> elements.back().name >> elements.back().count)) return;
-    } else if(word == "property") {
-      if(elements.empty() || !(words >> a)) return;
-      Property p;
-      if(a == "list") {
-        if(!(words >> a >> b)) return;
-        p.count_size = size_of(a);
-        p.item_size = size_of(b);
-        if(p.count_size == 0 || p.item_size == 0) return;
-      } else if((p.size = size_of(a)) == 0) {
-        return;
-      }
-      elements.back().properties.push_back(p);
-    }
-  }
-  const std::size_t body = bytes.find('\n', header_end);
-  if(body == std::string::npos) return;
-  std::size_t at = body + 1;
-  const auto too_long = [&](const Element& element, unsigned long long i, const std::string& count) {
-    throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has a list of " + count +
-                        " entries, more than the file holds");
-  };
-  if(ascii) {
-    std::size_t e = 0;
-    unsigned long long i = 0;
-    while(at < bytes.size()) {
-      std::size_t end = bytes.find('\n', at);
-      if(end == std::string::npos) end = bytes.size();
-      std::istringstream words(bytes.substr(at, end - at));
-      at = end + 1;
-      while(e < elements.size() && i == elements[e].count) e += 1, i = 0;
-      std::string token;
-      if(e == elements.size() || !(words >> token)) continue;   // blank, or after the elements: checked elsewhere
-      for(const Property& p : elements[e].properties) {
-        if(p.count_size == 0) {
-          words >> token;
-          continue;
-        }
-        // Each entry takes a character and a separator at least.
-        if(token.find('-') != std::string::npos) {
-          if(token.find_first_not_of("-0") != std::string::npos)
-            throw Invalid_input(shown + ": " + elements[e].name + " " + std::to_string(i) + " has a list of " + token + " entries");
-        } else if(std::strtoull(token.c_str(), nullptr, 10) > (bytes.size() - std::min(at, bytes.size())) / 2 + 1 + words.str().size()) {
-          too_long(elements[e], i, token);
-        }
-        for(unsigned long long n = std::strtoull(token.c_str(), nullptr, 10); n > 0 && (words >> token); --n) {}
-        words >> token;
-      }
-      i += 1;
-    }
-    return;
-  }
-  const auto count_at = [&](std::size_t position, std::size_t size) {
-    unsigned long long value = 0;
-    for(std::size_t k = 0; k < size; ++k)
-      value = value << 8 | static_cast<unsigned char>(bytes[position + (big_endian ? k : size - 1 - k)]);
-    return value;
-  };
-  for(const Element& element : elements) {
-    const bool has_list = std::any_of(element.properties.begin(), element.properties.end(), [](const Property& p) { return p.count_size > 0; });
-    if(!has_list) {   // fixed-size instances: all at once
-      std::size_t size = 0;
-      for(const Property& p : element.properties) size += p.size;
-      if(size > 0 && element.count > (bytes.size() - std::min(at, bytes.size())) / size) return;   // truncated: CGAL's reader tells
-      at += static_cast<std::size_t>(element.count) * size;
-      continue;
-    }
-    for(unsigned long long i = 0; i < element.count; ++i)
-      for(const Property& p : element.properties) {
-        if(p.count_size == 0) {
-          at += p.size;
-          continue;
-        }
-        if(at + p.count_size > bytes.size()) return;
-        const unsigned long long n = count_at(at, p.count_size);
-        at += p.count_size;
-        if(n > (bytes.size() - at) / p.item_size) too_long(element, i, std::to_string(n));
-        at += static_cast<std::size_t>(n) * p.item_size;
-        if(at > bytes.size()) return;
-      }
-  }
-  if(at < bytes.size() && bytes.find_first_not_of(" \t\r\n", at) != std::string::npos) {
-    unsigned long long announced = 0;
-    for(const Element& element : elements) announced += element.count;
-    throw Invalid_input(shown + ": content after the " + std::to_string(announced) + " elements the header announces (byte " +
-                        std::to_string(at) + " of " + std::to_string(bytes.size()) + ")");
-  }
+  if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") return 4;
+  if(type == "double" || type == "float64") return 8;
+  return 0;
 }
 
-// The checks on a file's bytes that CGAL's PLY, STL and GOCAD readers do not make: content after
-// the elements a PLY header announces, after a binary STL's facets or an ASCII STL's first
-// endsolid, or after a GOCAD file's last END (all ignored by them); GOCAD vertex ids out of order
-// and ATOM vertices (misnumbered by them); PLY face indices they cannot read (said on std::cerr
-// only); and non-finite STL coordinates (CGAL merges equal corners through comparisons, and a NaN
+// A value of the PLY scalar type `type` read from `in` by CGAL's PLY reader's own code (ASCII or
+// binary as its `mode` says: 0, 1 little-endian, 2 big-endian), or none where that read fails.
+inline std::optional<long double> read_PLY_value(std::istream& in, const std::string& type, std::size_t mode)
+{
+  const auto read = [&](auto zero) -> std::optional<long double> {
+    CGAL::IO::internal::PLY_read_typed_number<decltype(zero)> reader("", mode);
+    reader.get(in);
+    if(in.fail()) return std::nullopt;
+    return static_cast<long double>(reader.buffer());
+  };
+  if(type == "char" || type == "int8") return read(std::int8_t());
+  if(type == "uchar" || type == "uint8") return read(std::uint8_t());
+  if(type == "short" || type == "int16") return read(std::int16_t());
+  if(type == "ushort" || type == "uint16") return read(std::uint16_t());
+  if(type == "int" || type == "int32") return read(std::int32_t());
+  if(type == "uint" || type == "uint32") return read(std::uint32_t());
+  if(type == "float" || type == "float32") return read(float());
+  return read(double());
+}
+
+// What CGAL's PLY reader does not check, or checks only after taking memory without bound, checked
+// on the bytes before it reads them. The header, parsed as that reader parses it (the format on
+// line 2, then keywords up to the end_header line): every property after its element and of a PLY
+// type (the reader crashes on the first, skips and misreads the second), element counts that are
+// numbers the file can hold, vertices with scalar x, y and z, faces with 32-bit vertex_indices
+// (the only ones it takes, saying so on std::cerr alone). Then the body, read value by value as it
+// reads it: list counts that it can read (it makes room for a count before reading the entries, an
+// uninitialized one where the read fails), not negative and no larger than the rest of the file can
+// hold (2^32 - 16 in a 200-byte file took 13 GB), and nothing after the elements the header
+// announces (it stops after them, silently dropping the rest), every value a number it reads.
+inline void check_PLY(const std::string& bytes, const std::string& shown)
+{
+  struct Property { std::string name, type, count_type; };   // a list has a count type
+  struct Element { std::string name; unsigned long long count = 0; std::vector<Property> properties; };
+  std::vector<Element> elements;
+  std::string format, index_type, coordinates;   // coordinates: the vertices' scalar x, y and z seen
+  std::size_t at = 0, line_number = 0;
+  const auto where = [&] { return shown + ":" + std::to_string(line_number) + ": "; };
+  for(bool ended = false; !ended;) {
+    // (CGAL's reader would take the whole file for the header, then read its elements from nothing.)
+    if(at >= bytes.size()) {
+      if(line_number == 0) return;   // an empty file: CGAL's reader tells
+      throw Invalid_input(shown + ": the header has no end_header line");
+    }
+    const std::size_t end = (std::min)(bytes.find('\n', at), bytes.size());
+    std::istringstream words(bytes.substr(at, end - at));
+    at = end + 1;
+    ++line_number;
+    std::string word, name, type, count_type, version;
+    words >> word;
+    if(line_number == 1) {
+      if(word != "ply") return;   // CGAL's reader tells
+    } else if(line_number == 2) {
+      if(word != "format" || !(words >> format >> version) ||
+         (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian"))
+        throw Invalid_input(where() + "not the format line (format ascii, binary_little_endian or binary_big_endian, "
+                                      "then a version)");
+    } else if(word == "end_header") {
+      ended = true;
+    } else if(word == "element" && (words >> name >> type)) {
+      // A count that is no count (-5 read as 2^64 - 5) or larger than the file could hold (an
+      // instance takes a byte at least): CGAL's reader would make room for it first.
+      if(type.find_first_not_of("0123456789") != std::string::npos)
+        throw Invalid_input(where() + "element " + name + " has the count '" + type + "', not a number of elements");
+      if(type.size() > 18 || std::stoull(type) > bytes.size())
+        throw Invalid_input(where() + "element " + name + " announces " + type + " instances, more than the file holds");
+      elements.push_back({name, std::stoull(type), {}});
+    } else if(word == "property") {
+      if(elements.empty()) throw Invalid_input(where() + "a property declared before any element");
+      const bool list = (words >> type) && type == "list";
+      if(!(list ? (words >> count_type >> type >> name) : (words >> name))) return;   // CGAL's reader tells
+      for(const std::string& t : list ? std::vector<std::string>{count_type, type} : std::vector<std::string>{type})
+        if(PLY_type_size(t) == 0) throw Invalid_input(where() + "a property of type " + printable(t) + ", which is no PLY type");
+      if(list && (count_type.find("float") != std::string::npos || count_type == "double"))
+        throw Invalid_input(where() + "a list counted by a " + count_type + " (a count is an integer)");
+      Element& element = elements.back();
+      element.properties.push_back({name, type, list ? count_type : std::string()});
+      if(element.name == "vertex" && (name == "x" || name == "y" || name == "z")) {
+        if(list) throw Invalid_input(where() + "the vertex coordinate " + name + " is declared as a list");
+        coordinates += name;
+      }
+      if((element.name == "face" || element.name == "faces") && list && (name == "vertex_indices" || name == "vertex_index"))
+        index_type = type;
+    }
+  }
+  const auto declared = [&](const char* name) {
+    return std::any_of(elements.begin(), elements.end(), [&](const Element& e) { return e.name == name; });
+  };
+  for(const char axis : {'x', 'y', 'z'})
+    if(declared("vertex") && coordinates.find(axis) == std::string::npos)
+      throw Invalid_input(shown + ": the vertices have no property " + std::string(1, axis));
+  if((declared("face") || declared("faces")) && index_type.empty())
+    throw Invalid_input(shown + ": the faces have no list property vertex_indices (or vertex_index)");
+  if((declared("face") || declared("faces")) && index_type != "int" && index_type != "uint" && index_type != "int32" &&
+     index_type != "uint32")
+    throw Invalid_input(shown + ": face vertex indices of type " + printable(index_type) + " (CGAL's PLY reader takes int or uint)");
+
+  unsigned long long announced = 0;
+  for(const Element& element : elements) announced += element.count;
+  // The body read as CGAL's reader reads it, by its own code, but for the lists' entries: it takes
+  // a count it could not read (the file ended, or no number) from an uninitialized variable, and
+  // makes room for that many entries.
+  std::istringstream in(bytes.substr(at));
+  CGAL::IO::set_mode(in, CGAL::IO::BINARY);
+  const std::size_t mode = format == "ascii" ? 0 : format == "binary_little_endian" ? 1 : 2;
+  const auto bad_count = [&](const Element& element, unsigned long long i, const std::string& count, const std::string& why) {
+    throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has a list of " + count + " entries" + why);
+  };
+  // Reads a value of `type` for property `name` of instance i of `element`; where CGAL's reader
+  // would fail (and, in a face element, go on reading the next elements from a failed stream, into
+  // uninitialized counts), says why. `text` gets the value as written in an ASCII file.
+  std::string text;
+  const auto value = [&](const Element& element, unsigned long long i, const std::string& name, const std::string& type) {
+    const std::size_t position = in.eof() ? bytes.size() : at + static_cast<std::size_t>(in.tellg());
+    const std::size_t begin = (std::min)(bytes.find_first_not_of(" \t\r\n\v\f", position), bytes.size());
+    if(mode == 0) text = bytes.substr(begin, bytes.find_first_of(" \t\r\n\v\f", begin) - begin);
+    const std::optional<long double> v = read_PLY_value(in, type, mode);
+    if(!v && (mode == 0 ? text.empty() : bytes.size() - position < PLY_type_size(type)))
+      throw Invalid_input(shown + ": the file ends before the " + std::to_string(announced) + " elements the header announces");
+    if(!v)
+      throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has '" + printable(text) + "' for " + name +
+                          ", not a number of type " + type);
+    return *v;
+  };
+  for(const Element& element : elements)
+    for(unsigned long long i = 0; i < element.count && !element.properties.empty(); ++i)
+      for(const Property& p : element.properties) {
+        if(p.count_type.empty()) {
+          value(element, i, p.name, p.type);
+          continue;
+        }
+        const long double n = value(element, i, "the count of " + p.name, p.count_type);
+        // (In an ASCII file, the number as written: CGAL converts it to the count's type.)
+        const std::string count = mode == 0 ? printable(text) : std::to_string(static_cast<long long>(n));
+        if(n < 0 || (mode == 0 && text[0] == '-' && text.find_first_not_of("-0") != std::string::npos)) bad_count(element, i, count, "");
+        // Each entry takes a character and a separator at least, or its size in binary.
+        const std::size_t left = in.eof() ? 0 : bytes.size() - at - static_cast<std::size_t>(in.tellg());
+        if(n > (mode == 0 ? (left + 1) / 2 : left / PLY_type_size(p.type))) bad_count(element, i, count, ", more than the file holds");
+        for(long double k = 0; k < n; ++k) value(element, i, "an entry of " + p.name, p.type);
+      }
+  if(in.eof()) return;
+  const std::size_t end = at + static_cast<std::size_t>(in.tellg()), extra = bytes.find_first_not_of(" \t\r\n\v\f", end);
+  if(extra == std::string::npos) return;
+  const std::string after = "content after the " + std::to_string(announced) + " elements the header announces";
+  if(mode == 0)
+    throw Invalid_input(shown + ":" + std::to_string(1 + std::count(bytes.begin(), bytes.begin() + std::ptrdiff_t(extra), '\n')) + ": " + after);
+  throw Invalid_input(shown + ": " + after + " (byte " + std::to_string(end) + " of " + std::to_string(bytes.size()) + ")");
+}
+
+// The checks on a file's bytes that CGAL's PLY, STL and GOCAD readers do not make: PLY's in
+// check_PLY(); content after a binary STL's facets or an ASCII STL's first endsolid, or after a
+// GOCAD file's last END (ignored by them); GOCAD vertex ids out of order, ATOM vertices
+// (misnumbered by them) and triangles of more than three indices; and non-finite STL coordinates (CGAL merges equal corners through comparisons, and a NaN
 // compares equal to every point). Two repairs of the bytes: a GOCAD file's carriage returns are
 // dropped (its reader takes "END\r" for an unknown keyword), and an ASCII STL written in capitals
 // is read in lower case.
@@ -439,67 +483,7 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       expected = id + 1;
     }
   } else if(e == "ply") {
-    const std::size_t header_end = bytes.find("end_header");
-    if(bytes.compare(0, 3, "ply") != 0 || header_end == std::string::npos) return;   // CGAL's reader tells
-    bool ascii = false, faces = false, vertices = false;
-    std::size_t elements = 0, line_number = 0;
-    std::string element, index_type;   // the element being declared; the type of the faces' vertex indices
-    std::string coordinates;           // the vertices' scalar coordinates among x, y and z
-    for(const std::string& line : split(bytes.substr(0, header_end))) {
-      ++line_number;
-      std::istringstream words(line);
-      std::string word, name, count_type, type;
-      unsigned long long count = 0;
-      words >> word;
-      if(word == "format") ascii = (words >> name) && name == "ascii";
-      std::string count_token;
-      if(word == "element" && (words >> element >> count_token)) {
-        // A count that is no count (-5 read as 2^64 - 5) or larger than the file could hold (an
-        // instance takes a byte at least) is refused here: CGAL's reader makes room for it first.
-        const std::string where = shown + ":" + std::to_string(line_number) + ": element " + element;
-        if(count_token.find_first_not_of("0123456789") != std::string::npos)
-          throw Invalid_input(where + " has the count '" + count_token + "', not a number of elements");
-        if(count_token.size() > 18 || (count = std::stoull(count_token)) > bytes.size())
-          throw Invalid_input(where + " announces " + count_token + " instances, more than the file holds");
-        elements += static_cast<std::size_t>(count);
-        faces = faces || element == "face" || element == "faces";
-        vertices = vertices || element == "vertex";
-      }
-      // CGAL's reader crashes on either of these (a property of no element, a list coordinate).
-      if(word == "property" && element.empty())
-        throw Invalid_input(shown + ":" + std::to_string(line_number) + ": a property declared before any element");
-      if(word == "property" && element == "vertex" && (words >> type >> name)) {
-        const bool list = type == "list";
-        if(list) words >> name >> name;   // the count's type, the entries' type, then the name
-        if(name == "x" || name == "y" || name == "z") {
-          if(list)
-            throw Invalid_input(shown + ":" + std::to_string(line_number) + ": the vertex coordinate " + name +
-                                " is declared as a list");
-          coordinates += name;
-        }
-      }
-      if(word == "property" && (element == "face" || element == "faces") && (words >> name >> count_type >> type) &&
-         name == "list" && (words >> name) && (name == "vertex_indices" || name == "vertex_index"))
-        index_type = type;
-    }
-    for(const char axis : {'x', 'y', 'z'})
-      if(vertices && coordinates.find(axis) == std::string::npos)
-        throw Invalid_input(shown + ": the vertices have no property " + std::string(1, axis));
-    // CGAL's reader takes 32-bit indices only, and says so on std::cerr alone.
-    if(faces && index_type.empty())
-      throw Invalid_input(shown + ": the faces have no list property vertex_indices (or vertex_index)");
-    if(faces && index_type != "int" && index_type != "uint" && index_type != "int32" && index_type != "uint32")
-      throw Invalid_input(shown + ": face vertex indices of type " + printable(index_type) + " (CGAL's PLY reader takes int or uint)");
-    check_PLY_body(bytes, shown, header_end, ascii);
-    if(!ascii) return;
-    // The lines after end_header's, numbered in the whole file.
-    const std::size_t first = 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + header_end, '\n'));
-    const std::size_t body = bytes.find('\n', header_end);
-    const std::vector<std::string> lines = body == std::string::npos ? std::vector<std::string>() : split(bytes.substr(body + 1));
-    std::size_t seen = 0;
-    for(std::size_t i = 0; i < lines.size(); ++i)
-      if(!blank(lines[i]) && ++seen > elements)
-        after(first + i, "the " + std::to_string(elements) + " elements the header announces");
+    check_PLY(bytes, shown);
   } else if(e == "stl") {
     const auto word = [&](std::size_t at) {   // little-endian, as STL stores it
       std::uint32_t w = 0;
@@ -541,10 +525,9 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
       if(w == "endfacet") ++facet;
       if(w == "endsolid") {
         std::string rest;
-        std::getline(words, rest);   // the solid's name
-        if(words >> w) {
-          const std::size_t line = 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + std::streamoff(words.tellg()), '\n'));
-          after(line - 1, "endsolid");
+        if(std::getline(words, rest) && (words >> w)) {   // (the solid's name, then more)
+          const std::size_t first = bytes.size() - static_cast<std::size_t>(words.rdbuf()->in_avail()) - w.size();
+          after(static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + std::ptrdiff_t(first), '\n')), "endsolid");
         }
         break;
       }
@@ -564,20 +547,14 @@ inline void check_bytes_for_CGAL(std::string& bytes, const std::string& shown, c
 // PLY, STL and GOCAD through CGAL's polygon soup readers, which keep the file's vertex and face
 // order (read_polygon_mesh may repair and reorder, and source/target pairs are matched by index),
 // then the checks the package's own readers make as they parse.
-inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& e)
+// `bytes` are the file's, `e` its extension (ply, stl or ts), `shown` its name in messages.
+inline Triangle_soup read_with_CGAL(std::string bytes, const std::string& shown, const std::string& e)
 {
   using Point = CGAL::Simple_cartesian<double>::Point_3;
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> faces;
-  const std::string shown = printable(path);
   bool ok = false;
   try {
-    std::string bytes;
-    {
-      std::ifstream in(path, std::ios::binary);
-      bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-      if(in.bad()) throw Invalid_input(shown + ": cannot read the file");
-    }
     check_bytes_for_CGAL(bytes, shown, e);
     // CGAL's stream readers on the bytes read above (no newline translation: either mode reads them).
     const auto read = [&](CGAL::IO::Mode mode, auto reader) {
@@ -611,9 +588,8 @@ inline Triangle_soup read_with_CGAL(const std::string& path, const std::string& 
   Triangle_soup soup;
   for(std::size_t v = 0; v < points.size(); ++v) {
     const Point& p = points[v];
-    for(const double x : {p.x(), p.y(), p.z()})
-      if(const std::string problem = Distortion_optimization::internal::coordinate_problem(x); !problem.empty())
-        throw Invalid_input(shown + ": vertex " + std::to_string(v) + " has " + problem);
+    if(const std::string problem = Distortion_optimization::internal::coordinate_problem(p.x(), p.y(), p.z()); !problem.empty())
+      throw Invalid_input(shown + ": vertex " + std::to_string(v) + " has " + problem);
     soup.points.push_back({p.x(), p.y(), p.z()});
   }
   for(std::size_t f = 0; f < faces.size(); ++f) {
@@ -654,7 +630,14 @@ inline Triangle_soup read_triangle_soup(const std::string& path)
     throw Invalid_input(internal::printable(path) + ": unsupported extension (use .off, .obj, .ply, .stl or .ts)");
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Invalid_input(internal::printable(path) + ": cannot open the file");
-  Triangle_soup soup = e == "off" ? read_OFF(in, path) : e == "obj" ? read_OBJ(in, path) : internal::read_with_CGAL(path, e);
+  Triangle_soup soup;
+  if(e == "off" || e == "obj") {
+    soup = e == "off" ? read_OFF(in, path) : read_OBJ(in, path);
+  } else {
+    std::string bytes(std::istreambuf_iterator<char>(in), {});
+    if(in.bad()) throw Invalid_input(internal::printable(path) + ": cannot read the file");
+    soup = internal::read_with_CGAL(std::move(bytes), internal::printable(path), e);
+  }
   if(soup.cells.empty()) throw Invalid_input(internal::printable(path) + ": no triangle");
   return soup;
 }

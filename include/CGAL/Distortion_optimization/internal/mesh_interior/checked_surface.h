@@ -93,9 +93,8 @@ struct Checked_surface
     for(auto v : vertices(tm)) {
       const auto& p = get(vpm, v);
       const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-      for(const double c : {x, y, z})
-        if(const std::string problem = coordinate_problem(c); !problem.empty())
-          throw Invalid_input("mesh_interior: " + vertex_name(v) + " has " + problem);
+      if(const std::string problem = coordinate_problem(x, y, z); !problem.empty())
+        throw Invalid_input("mesh_interior: " + vertex_name(v) + " has " + problem);
       const std::size_t i = get(vertex_index, v);
       if(compact.size() <= i) compact.resize(i + 1);
       compact[i] = points.size();
