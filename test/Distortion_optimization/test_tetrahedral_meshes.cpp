@@ -271,6 +271,24 @@ TEST(TetrahedralMeshes, BadInput)
   } catch(const DO::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("tetrahedra 0 and 4 lie on the same side of their common facet"), std::string::npos) << e.what();
   }
+  // Separate tetrahedra that overlap without folding (hostile round 3): one across the other, one
+  // inside the other; apart, they are two parts of a valid complex.
+  const std::vector<std::array<double, 3>> two = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                                  {0.2, 0.2, 0.2}, {1.2, 0.2, 0.2}, {0.2, 1.2, 0.2}, {0.2, 0.2, 1.2},
+                                                  {0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.1, 0.2, 0.1}, {0.1, 0.1, 0.2},
+                                                  {3, 0, 0}, {4, 0, 0}, {3, 1, 0}, {3, 0, 1}};
+  for(const auto& [second, message] : std::vector<std::pair<std::array<std::size_t, 4>, std::string>>{
+        {{4, 5, 6, 7}, "the tetrahedra overlap: their boundary passes through itself"},
+        {{8, 9, 10, 11}, "the tetrahedra overlap: a part of the mesh lies inside another"}}) {
+    try {
+      DO::c3t3_from_tetrahedra(c3t3, two, {{0, 1, 2, 3}, second});
+      ADD_FAILURE() << "accepted: " << message;
+    } catch(const DO::Invalid_input& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(DO::c3t3_from_tetrahedra(c3t3, two, {{0, 1, 2, 3}, {12, 13, 14, 15}}).size(), two.size());
+  EXPECT_EQ(c3t3.number_of_cells_in_complex(), 2u);
   // Two tetrahedra sharing a facet are a manifold complex; the points in neither get no vertex.
   const auto pair = DO::c3t3_from_tetrahedra(c3t3, star, {{0, 1, 2, 3}, {0, 2, 1, 6}});
   ASSERT_EQ(pair.size(), star.size());

@@ -490,10 +490,12 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   expect_invalid([&] { DO::mesh_interior(good, DOP::cell_radius_edge_ratio(1.)); }, "radius-edge ratio");
   expect_invalid([&] { DO::mesh_interior(good, DOP::sharp_edge_angle(0.)); }, "sharp edge angle");
   expect_invalid([&] { DO::mesh_interior(good, DOP::odt_iterations(-1)); }, "ODT and Lloyd");
-  // Sizes that ask for more vertices than allowed (given, or 10^7) are refused before Mesh_3 runs.
+  // Sizes that ask for more vertices than allowed (given, or 2 million) are refused before Mesh_3
+  // runs: 9 million (about 40 GB with the tool's maps) were once accepted.
   expect_invalid([&] { DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100))); },
                  "more than maximum_number_of_vertices");
-  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(1e-4)); }, "vertices, more than 10^7 (cell size 0.0001");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(1e-4)); }, "vertices, more than 2 million (cell size 0.0001");
+  expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(0.0075)); }, "vertices, more than 2 million (cell size 0.0075");
   // Sizes that ask for few vertices where the facet distance needs many: the run stops with an
   // error instead of a partial mesh.
   expect_invalid([&] {
@@ -504,7 +506,18 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   Surface flat = icosahedron(1);
   for(auto v : flat.vertices()) flat.point(v) = Point(flat.point(v).x(), flat.point(v).y(), 1e-9 * flat.point(v).z());
   expect_invalid([&] { DO::mesh_interior(flat); }, "the volume is thinner (2 volume / area = 1");
-  expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9)); }, "more than 10^7");
+  expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9)); }, "more than 2 million");
+  // A plate 0.02 thick: at the default sizes (facet size 0.058) Mesh_3's tetrahedra touched across
+  // it (after minutes, for thinner plates); it is refused at once, and meshed below twice its
+  // thickness, as the message says.
+  Surface plate;
+  CGAL::make_hexahedron(Point(-1, -1, -0.01), Point(1, -1, -0.01), Point(1, 1, -0.01), Point(-1, 1, -0.01),
+                        Point(-1, 1, 0.01), Point(-1, -1, 0.01), Point(1, -1, 0.01), Point(1, 1, 0.01), plate);
+  CGAL::Polygon_mesh_processing::triangulate_faces(plate);
+  expect_invalid([&] { DO::mesh_interior(plate); }, "than half the facet size (0.0292): Mesh_3 would not recover its boundary; "
+                                                    "give a facet size below 0.0392");
+  const auto plate_mesh = DO::mesh_interior(plate, DOP::cell_size(0.035));
+  EXPECT_GT(plate_mesh.number_of_cells_in_complex(), 1000u);
   EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);
 }
 

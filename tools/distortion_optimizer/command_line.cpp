@@ -149,7 +149,8 @@ std::string usage()
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
   "               started, and write that map (the report says stopped_by_time_limit); a limit\n"
   "               reached while untangling, cells still inverted, fails (status 1); in the volume\n"
-  "               mode, Mesh_3 stops at SECONDS too, which fails (status 1)\n"
+  "               mode, Mesh_3 stops at SECONDS too (within a tenth more, 2 s at least), which\n"
+  "               fails (status 1)\n"
   "exit status: 0 done; 1 bad input or a failed run, nothing written; 2 a usage error\n";
 }
 

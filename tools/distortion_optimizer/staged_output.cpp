@@ -10,8 +10,10 @@
 #include <CGAL/Distortion_optimization/IO/write_file_atomically.h>
 #include <CGAL/Distortion_optimization/errors.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -23,6 +25,7 @@
 #include <cerrno>
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 namespace distortion_optimizer {
@@ -184,6 +187,42 @@ void commit_uninterrupted(const std::function<void()>& commit)
     throw;
   }
   release();
+}
+
+namespace {
+
+// The message of the deadline armed, in fixed storage that the handler may write.
+std::array<char, 1024> deadline_message;
+std::size_t deadline_message_size = 0;
+
+void end_at_deadline(int)
+{
+  Temporary_registry::get().unlink_all();
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, deadline_message.data(), deadline_message_size);
+  ::_exit(1);
+}
+
+} // namespace
+
+Hard_deadline::Hard_deadline(double seconds, const std::string& message)
+{
+  if(!(seconds > 0)) return;
+  const std::string line = "distortion_optimizer: " + message + "\n";
+  deadline_message_size = (std::min)(line.size(), deadline_message.size());
+  std::memcpy(deadline_message.data(), line.data(), deadline_message_size);
+  std::signal(SIGALRM, end_at_deadline);
+  itimerval timer{};
+  timer.it_value.tv_sec = static_cast<time_t>(seconds);
+  timer.it_value.tv_usec = static_cast<suseconds_t>((seconds - std::floor(seconds)) * 1e6);
+  armed_ = ::setitimer(ITIMER_REAL, &timer, nullptr) == 0;
+}
+
+Hard_deadline::~Hard_deadline()
+{
+  if(!armed_) return;
+  itimerval off{};
+  ::setitimer(ITIMER_REAL, &off, nullptr);
+  std::signal(SIGALRM, unlink_temporaries_and_reraise);
 }
 
 } // namespace distortion_optimizer

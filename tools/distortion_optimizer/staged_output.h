@@ -57,6 +57,21 @@ void remove_temporary_files_on_signals();
 // files say (a run whose outputs are all in place does not end with 143).
 void commit_uninterrupted(const std::function<void()>& commit);
 
+// Ends the program if `seconds` (> 0; 0 for never) pass before it is destroyed: `message` on
+// standard error, the temporary files removed, exit status 1. For a stage that its own time limit
+// cannot always stop (Mesh_3's protection of sharp edges runs long steps that check none).
+class Hard_deadline
+{
+public:
+  Hard_deadline(double seconds, const std::string& message);
+  Hard_deadline(const Hard_deadline&) = delete;
+  Hard_deadline& operator=(const Hard_deadline&) = delete;
+  ~Hard_deadline();
+
+private:
+  bool armed_ = false;
+};
+
 } // namespace distortion_optimizer
 
 #endif // DISTORTION_OPTIMIZER_STAGED_OUTPUT_H

@@ -117,6 +117,11 @@ int run_triangles(const Command_line& c)
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
   if(c.ideal()) {
     if(!planar) throw DO::Invalid_input(c.source + ": --reference ideal needs a planar mesh (z = 0) or a .mesh");
+    // As with a .mesh: the mesh improved is the source, which must be valid (not folded, no flat triangle).
+    const std::vector<bool> inverted = DO::inverted_triangles(source.points, source.cells);
+    if(const auto count = std::count(inverted.begin(), inverted.end(), true); count > 0)
+      throw DO::Invalid_input(c.source + ": " + std::to_string(count) + " of its triangles are inverted or flat (--reference "
+                              "ideal takes a valid mesh: --untangle repairs a map's target, not the source)");
     for(Vertex v : mesh.vertices()) uv[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
   } else if(!c.target.empty()) {
     // The target's positions (z = 0), or its UVs: an OBJ whose faces refer to texture coordinates.

@@ -5,11 +5,14 @@
 
 #include "volume_mode.h"
 
+#include "staged_output.h"
+
 #include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -24,6 +27,10 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
   try {
     namespace P = DO::parameters;
     const auto limit = P::meshing_time_limit(c.time_limit);   // 0: none
+    // Mesh_3 stops at the limit where it checks it; past that, a moment later, the tool does.
+    const Hard_deadline deadline(c.time_limit > 0 ? c.time_limit + (std::max)(2., 0.1 * c.time_limit) : 0.,
+                                 c.source + ": mesh_interior: Mesh_3 did not finish within the time limit of " +
+                                   DO::internal::shown_number(c.time_limit) + " s (larger sizes ask for fewer tetrahedra)");
     DO::tetrahedra_from_c3t3(c.cell_size > 0 ? DO::mesh_interior(surface, P::cell_size(c.cell_size, limit))
                                              : DO::mesh_interior(surface, limit), soup.points, soup.cells);
     soup.labels.assign(soup.cells.size(), 1);
@@ -31,8 +38,9 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     // The library's remedies name its parameters; the tool's user has --cell-size (the facet size,
     // and ten times the facet distance).
     std::string what = e.what();
+    if(const auto size = what.find("; give a facet size below "); size != std::string::npos)   // the number stays
+      what.replace(size, 26, "; give a --cell-size below ");
     for(const auto& [library, tool] : {std::pair<std::string, std::string>("; give larger sizes", "; give a larger --cell-size"),
-                                       {"; give sizes below its thickness", "; give a --cell-size below 10 times its thickness"},
                                        {"; give sizes below their distance", "; give a --cell-size below 10 times their distance"},
                                        {"; try a larger sharp_edge_angle",   // (a smaller --cell-size would ask for more vertices)
                                         "; the tool has neither option: mesh it with the library's mesh_interior() and a larger "

@@ -8,7 +8,9 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/boundary_guard.h>
 #include <CGAL/Distortion_optimization/internal/parallel.h>
+#include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/enum.h>
@@ -368,6 +370,29 @@ namespace parameters {
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(subdomain_index_t, subdomain_index)
 } // namespace parameters
 
+namespace internal {
+
+// Positively oriented tetrahedra that form a manifold complex and do not fold may still overlap:
+// separate parts one across or inside another, or a part whose boundary passes through itself.
+// Such a map is not injective, which its boundary tells (Aigerman and Lipman 2013): the boundary
+// guard's exact test, with the nesting of the parts.
+inline void check_cells_do_not_overlap(const std::vector<std::array<double, 3>>& points,
+                                       const std::vector<std::array<std::size_t, 4>>& cells)
+{
+  using Guard = Boundary_guard<3>;
+  std::vector<std::array<std::uint32_t, 4>> tetrahedra(cells.size());
+  for(std::size_t t = 0; t < cells.size(); ++t)
+    for(int i = 0; i < 4; ++i) tetrahedra[t][i] = static_cast<std::uint32_t>(cells[t][i]);
+  std::vector<Vector<3>> x(points.size());
+  for(std::size_t v = 0; v < points.size(); ++v) x[v] = Vector<3>(points[v][0], points[v][1], points[v][2]);
+  bool nested = false;
+  if(!Guard(Guard::boundary_faces(tetrahedra), x.size(), connected_pieces(tetrahedra, x.size())).is_injective(x, nullptr, 0, &nested))
+    throw Invalid_input(nested ? "the tetrahedra overlap: a part of the mesh lies inside another (separate parts must be apart)"
+                               : "the tetrahedra overlap: their boundary passes through itself (separate parts must be apart)");
+}
+
+} // namespace internal
+
 /// \ingroup PkgDistortionOptimizationRef
 /// Replaces the content of `c3t3` (a `CGAL::Mesh_complex_3_in_triangulation_3`) with the given
 /// tetrahedra, all in one subdomain, vertex `i` at `points[i]`: the way to hand a mesh
@@ -395,8 +420,9 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(subdomain_index_t, subdomain_in
 /// predicate, the message names it), a tetrahedron listed twice, or tetrahedra that do not form a
 /// manifold complex: a facet in more than two, or two that meet only at an edge or a vertex (the
 /// message names them), two on the same side of their common facet (a folded mesh: they
-/// overlap; the message names them), or a complex without boundary (its cells overlap); for a negative number
-/// of threads. `c3t3` is then unchanged.
+/// overlap; the message names them), a complex without boundary (its cells overlap), or parts
+/// that overlap otherwise (one inside another, or a boundary that passes through itself: exact
+/// tests); for a negative number of threads. `c3t3` is then unchanged.
 template <class C3T3, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename C3T3::Triangulation::Vertex_handle>
 c3t3_from_tetrahedra(C3T3& c3t3, const std::vector<std::array<double, 3>>& points,
@@ -459,6 +485,7 @@ c3t3_from_tetrahedra(C3T3& c3t3, const std::vector<std::array<double, 3>>& point
     }
   });
   if(error) std::rethrow_exception(error);
+  internal::check_cells_do_not_overlap(points, cells);
   // The complex's swap() exchanges the triangulations but not Mesh_3's cache of the facets around
   // each edge (face_status()): clear() drops that cache, which would otherwise still describe the
   // old complex, keyed by vertices that go with `built`.

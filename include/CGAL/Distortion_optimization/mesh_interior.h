@@ -424,8 +424,9 @@ h / 10.
     \cgalParamDefault{10 times the number of vertices the sizes ask for,
                       `V / (0.2 cell_size^3) / 5.5 + A / (0.3 facet_size^2) / 2` (at least 10^4, at most 10^15)}
     \cgalParamExtra{Mesh_3 checks it while refining, not while protecting the sharp edges. Sizes that ask for more
-                    vertices than this maximum (when it is given and not 0), or than 10^7 (when it is not
-                    given), are refused before Mesh_3 starts.}
+                    vertices than this maximum (when it is given and not 0), or than 2 million (when it is not
+                    given: Mesh_3 and a map of the package take a few kilobytes a vertex), are refused before
+                    Mesh_3 starts.}
   \cgalParamNEnd
 
   \cgalParamNBegin{meshing_time_limit}
@@ -443,14 +444,17 @@ h / 10.
 \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
 that is not a triangle, a non-finite coordinate or one beyond 1e100 in magnitude, a border edge, a non-manifold vertex, a
 degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
-(its mean thickness, 2 volume / area, is smaller) or has a component that is (2 |volume| / area
-of that component; the error names one of its faces), has two components closer than the facet
+(its mean thickness, 2 volume / area, is smaller) or, as a slab (thinner than a tenth of the cube
+root of its volume), than half the facet size (a plate 0.02 thick meshed at a facet size of 0.058
+came out with touching tetrahedra, at 0.035 it came out right), or
+has a component that is (2 |volume| / area of that component; the error names one of its faces),
+has two components closer than the facet
 distance (the error names a face of each) or two sharp edges (those protected, see
 `sharp_edge_angle`) closer than it along more than the edge size that meet only farther away,
 such as the two sides of a slit (Mesh_3 would protect them with balls no larger than the gap,
 for minutes or without end; the error names their vertices), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
-`maximum_number_of_vertices` allows (10^7 by default), if Mesh_3 reaches
+`maximum_number_of_vertices` allows (2 million by default), if Mesh_3 reaches
 `maximum_number_of_vertices` or runs longer than `meshing_time_limit`, if the complex has no cell or a component of the surface gets no
 tetrahedron even when seeded (the error names one of its faces), if the boundary of the complex
 is not a 2-manifold after the changes of sides above (tetrahedra that touch only along an edge

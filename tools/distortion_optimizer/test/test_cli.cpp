@@ -1149,6 +1149,43 @@ void write_cube(const std::string& path)
                          "3 1 3 5\n3 3 7 5\n";
 }
 
+// The icosahedron's faces split in four `levels` times, on the unit sphere, with y scaled by
+// `squash` (0.01: the knife-edged disc of hostile round 3, whose sharp rim Mesh_3 protects for minutes).
+void write_icosphere(const std::string& path, int levels, double squash)
+{
+  const double g = (1 + std::sqrt(5.)) / 2;
+  std::vector<std::array<double, 3>> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<std::array<std::size_t, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                               {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                               {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  const auto unit = [](std::array<double, 3> x) {
+    const double n = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    return std::array<double, 3>{x[0] / n, x[1] / n, x[2] / n};
+  };
+  for(auto& x : p) x = unit(x);
+  for(int level = 0; level < levels; ++level) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> middle;
+    const auto mid = [&](std::size_t a, std::size_t b) {
+      const auto key = std::minmax(a, b);
+      if(const auto m = middle.find(key); m != middle.end()) return m->second;
+      p.push_back(unit({p[a][0] + p[b][0], p[a][1] + p[b][1], p[a][2] + p[b][2]}));
+      return middle[key] = p.size() - 1;
+    };
+    std::vector<std::array<std::size_t, 3>> finer;
+    for(const auto& t : f) {
+      const std::size_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+      finer.insert(finer.end(), {{t[0], ab, ca}, {t[1], bc, ab}, {t[2], ca, bc}, {ab, bc, ca}});
+    }
+    f = finer;
+  }
+  std::ofstream out(path);
+  out.precision(17);
+  out << "OFF\n" << p.size() << ' ' << f.size() << " 0\n";
+  for(const auto& x : p) out << x[0] << ' ' << squash * x[1] << ' ' << x[2] << '\n';
+  for(const auto& t : f) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
 void write_octahedron(const std::string& path, double r, double c = 0)
 {
   std::ofstream out(path);
@@ -1307,6 +1344,12 @@ TEST(CommandLine, TheTimeLimitStopsTheMeshing)
   std::remove(o.c_str());
   expect_failed_cleanly(run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o),
                         "Mesh_3 did not finish within the time limit of 0.5 s", o);
+  // Where Mesh_3 runs long steps that check no limit (the protection of a knife-edged rim ran on
+  // for minutes past it), the tool ends the run a moment after the limit.
+  const std::string disc = temp("flat_disc.off");
+  write_icosphere(disc, 2, 0.01);
+  expect_failed_cleanly(run("--source " + disc + " --start radial --cell-size 0.026 --time-limit 1 --output " + o),
+                        "Mesh_3 did not finish within the time limit of 1 s", o);
 }
 
 TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
@@ -1357,6 +1400,13 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   fold.cells = {{0, 1, 2, 3}, {2, 1, 0, 4}};
   IO::write_MEDIT_soup(folded, fold);
   expect_failure("--source " + folded + " --start radial --center 0.1,0.1,0.1 --output " + o, 1, "lie on the same side of their common facet");
+  // So is one whose separate parts overlap (issue 66), here as a mesh to improve.
+  const std::string overlapping = temp("overlapping.mesh");
+  fold.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.2}, {1.2, 0.2, 0.2}, {0.2, 1.2, 0.2}, {0.2, 0.2, 1.2}};
+  fold.cells = {{0, 1, 2, 3}, {4, 5, 6, 7}};
+  IO::write_MEDIT_soup(overlapping, fold);
+  expect_failure("--source " + overlapping + " --reference ideal --output " + temp("overlapping_out.mesh"), 1,
+                 "the tetrahedra overlap: their boundary passes through itself");
   const std::string outside = temp("outside.off");
   write_octahedron(outside, 0.5, 0.8);   // reaches x = 1.3
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + outside + " --carry-output " + c, 1,
@@ -1379,15 +1429,15 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
   expect_failure("--source " + cube + " --start ball --center 1,2" + base, 2, "--center expects X,Y,Z");
   expect_failure("--source " + cube + " --start ball --cell-size 0" + " --output " + o, 2, "--cell-size must be a positive number");
   expect_failure("--source " + cube + " --start ball --cell-size 1e-4 --output " + o, 1,
-                 "vertices, more than 10^7 (cell size 0.0001, facet size");
+                 "vertices, more than 2 million (cell size 0.0001, facet size");
   expect_failure("--source " + cube + " --start ball --cell-size 1e-4 --output " + o, 1, "; give a larger --cell-size");
   const std::string plate = temp("plate.off");   // 2 x 2 x 2e-6: thinner than the default facet distance
   std::ofstream(plate) << "OFF\n8 12 0\n-1 -1 -1e-6\n1 -1 -1e-6\n-1 1 -1e-6\n1 1 -1e-6\n-1 -1 1e-6\n1 -1 1e-6\n-1 1 1e-6\n"
                           "1 1 1e-6\n3 0 2 1\n3 1 2 3\n3 4 5 6\n3 5 7 6\n3 0 1 4\n3 1 5 4\n3 2 6 3\n3 3 6 7\n3 0 4 2\n"
                           "3 2 4 6\n3 1 3 5\n3 3 7 5\n";
   expect_failure("--source " + plate + " --start ball --output " + o, 1,
-                 "the volume is thinner (2 volume / area = 2e-06) than the facet distance");
-  expect_failure("--source " + plate + " --start ball --output " + o, 1, "; give a --cell-size below 10 times its thickness");
+                 "the volume is thinner (2 volume / area = 2e-06) than half the facet size");
+  expect_failure("--source " + plate + " --start ball --output " + o, 1, "; give a --cell-size below 4e-06");
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + cube, 2, "go together");
   expect_failure("--source " + cube + " --start ball --output " + temp("x.off"), 2, "--output must end in .mesh or .vtu");
 }
@@ -1616,6 +1666,18 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
   result = run("--source " + m + " --reference ideal --measure arap --output " + improved);
   EXPECT_EQ(result.status, 1) << result.output;
   EXPECT_NE(result.output.find("the measure arap is finite on flat cells"), std::string::npos) << result.output;
+
+  // A folded source is refused in 2D as in 3D, --untangle or not (it repairs a map's target).
+  IO::Triangle_soup folded = IO::read_triangle_soup(planar);
+  const std::size_t middle = std::size_t(std::max_element(folded.points.begin(), folded.points.end(), [](const auto& a, const auto& b) {
+                               return std::abs(a[0] - 1) + std::abs(a[1] - 0.5) > std::abs(b[0] - 1) + std::abs(b[1] - 0.5);
+                             }) - folded.points.begin());
+  folded.points[middle][0] += 0.5;
+  const std::string folded_file = temp("ideal_folded.off");
+  IO::write_triangle_soup(folded_file, folded);
+  for(const std::string untangle : {"", " --untangle"})
+    expect_failed_cleanly(run("--source " + folded_file + " --reference ideal" + untangle + " --output " + temp("ideal_folded_out.off")),
+                          "of its triangles are inverted or flat (--reference ideal takes a valid mesh", temp("ideal_folded_out.off"));
 
   // The command line.
   for(const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{

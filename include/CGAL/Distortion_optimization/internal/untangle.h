@@ -261,12 +261,12 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
   report.inverted_before = report.inverted_after = tangled();
   if(report.inverted_before == 0) return report;
   if(throw_on_failure) check_tangled_cells_can_move(problem, traits);
+  const bool constrained = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end();
+  const bool slides = std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; });
   // A mirror image: nothing holds the map (no vertex constrained, none sliding) and its cells'
   // signed volumes sum below zero, so that the descent would have to turn it inside out (over a
   // thousand rounds from some sizes). Its reflection is the same map the right way round.
-  const bool held = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end() ||
-                    std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; });
-  if(!held) {
+  if(!constrained && !slides) {
     double signed_volume = 0;
     for(std::size_t c = 0; c < nc; ++c) signed_volume += problem.map.jacobian_determinant(c) * problem.map.rest_volume[c];
     if(signed_volume < 0) {
@@ -285,8 +285,7 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
   // round then flattens much of the map, and no later round reopens it. From eps = 0.01 such maps
   // untangle in fewer rounds. A fixed or free boundary keeps eps = 1, which takes fewer rounds
   // there.
-  if(std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; }))
-    barrier.epsilon = 0.01;
+  if(slides) barrier.epsilon = 0.01;
   Barrier_energy<n> energy(problem, workers);
   // The first step moves a vertex by a tenth of a typical edge.
   double volume = 0;
@@ -368,8 +367,6 @@ Untangle_result untangle_everywhere(Optimization_problem<n>& problem, const Geom
     const std::size_t still = report.inverted_after;
     problem.map.target = start_targets;
     // (The count may exceed the start's: a round may flip valid cells on its way.)
-    const bool constrained = std::find(problem.is_free.begin(), problem.is_free.end(), 0) != problem.is_free.end();
-    const bool slides = std::any_of(problem.is_sliding.begin(), problem.is_sliding.end(), [](unsigned char s) { return s != 0; });
     const std::string why = constrained ? "the descent found no injective map within the constraints, which may admit none "
                                           "(e.g. a fixed boundary that crosses itself)"
                           : slides ? "the boundary slides on its surface, and the descent found no injective map with it there"

@@ -137,21 +137,30 @@ std::size_t flip_flat_cells(C3T3& c3t3)
       }
     return false;
   };
-  // A flip may take other flat cells with it: they are looked for again after each. (Each round
-  // removes a flat cell or keeps one; the bound is for configurations where a flip would make one.)
-  std::set<Cell_handle> kept;
-  std::size_t limit = 0;
-  for(std::size_t round = 0;; ++round) {
-    Cell_handle next;
-    std::size_t flat = 0;
+  // A flip may take other flat cells with it, or make some: the cells flat at the start of a sweep
+  // are flipped in turn where they still are (found by their vertices), then looked for again.
+  // (Flips that keep making flat cells elsewhere are not followed beyond 100 sweeps.)
+  using Quadruple = std::array<Vertex_handle, 4>;
+  std::set<Quadruple> kept;
+  for(int sweep = 0;; ++sweep) {
+    std::vector<Quadruple> flat;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
       if(is_flat(c)) {
-        ++flat;
-        if(next == Cell_handle() && kept.count(c) == 0) next = c;
+        Quadruple q{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+        std::sort(q.begin(), q.end());
+        flat.push_back(q);
       }
-    if(round == 0) limit = 4 * flat;
-    if(next == Cell_handle() || round > limit) return flat;
-    if(!flip_away(next)) kept.insert(next);
+    if(sweep == 100) return flat.size();
+    bool flipped = false;
+    for(const Quadruple& q : flat) {
+      Cell_handle c;
+      int i, j, k, l;
+      if(kept.count(q) > 0 || !tr.is_cell(q[0], q[1], q[2], q[3], c, i, j, k, l) || !c3t3.is_in_complex(c) || !is_flat(c))
+        continue;
+      if(flip_away(c)) flipped = true;
+      else kept.insert(q);
+    }
+    if(!flipped) return flat.size();
   }
 }
 

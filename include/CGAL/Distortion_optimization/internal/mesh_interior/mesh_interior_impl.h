@@ -79,6 +79,9 @@ struct Interior_mesh_defaults
   // Without exude_slivers, Mesh_3's exudation still runs on the cells with a dihedral angle below
   // this (degrees): that costs little and removes the flattest cells (see mesh_interior()).
   static constexpr double sliver_bound = 2;
+  // Without maximum_number_of_vertices, sizes that ask for more vertices are refused: Mesh_3 and
+  // the maps of the package take a few kilobytes a vertex (see mesh_interior()).
+  static constexpr double affordable_vertices = 2e6;
 };
 
 // What mesh_interior() read from its named parameters besides the sizes.
@@ -99,7 +102,7 @@ struct Mesh_3_settings
 class Mesh_3_deadline
 {
 public:
-  explicit Mesh_3_deadline(double seconds)
+  explicit Mesh_3_deadline(double seconds) : seconds_(seconds)
   {
     if(seconds > 0)
       watchdog_ = std::thread([this, seconds] {
@@ -120,14 +123,15 @@ public:
   }
   std::atomic<bool>* flag() { return &stop_; }
   // Throws if the time ran out (Mesh_3 then returned an unfinished complex).
-  void check(double seconds) const
+  void check() const
   {
     if(stop_)
-      throw Invalid_input("mesh_interior: Mesh_3 did not finish within the time limit of " + shown_number(seconds) +
+      throw Invalid_input("mesh_interior: Mesh_3 did not finish within the time limit of " + shown_number(seconds_) +
                           " s (larger sizes ask for fewer tetrahedra)");
   }
 
 private:
+  double seconds_;
   std::atomic<bool> stop_{false};
   bool done_ = false;
   std::mutex mutex_;
@@ -136,18 +140,21 @@ private:
 };
 
 // Sizes that ask for more vertices than memory holds are refused before Mesh_3 starts rather than
-// after it has filled the memory: beyond the maximum when one is given, else beyond 10^7.
+// after it has filled the memory: beyond the maximum when one is given, else beyond
+// Interior_mesh_defaults::affordable_vertices.
 inline void check_vertex_budget(const Mesh_3_settings& settings, double cell_size, double facet_size)
 {
   const double asked = settings.asked_vertices;
   const bool maximum_given = settings.maximum_given;
   const std::size_t maximum_vertices = settings.maximum_vertices;
-  const double affordable = maximum_given && maximum_vertices > 0 ? double(maximum_vertices) : maximum_given ? 1e300 : 1e7;
+  const double affordable = maximum_given && maximum_vertices > 0 ? double(maximum_vertices)
+                            : maximum_given                       ? 1e300
+                                                                  : Interior_mesh_defaults::affordable_vertices;
   if(!(asked <= affordable)) {
     char text[160];
     std::snprintf(text, sizeof text, "about %.2g vertices, more than %s (cell size %.3g, facet size %.3g)",
                   (std::min)(asked, 1e300),
-                  maximum_given ? "maximum_number_of_vertices" : "10^7", cell_size, facet_size);
+                  maximum_given ? "maximum_number_of_vertices" : "2 million", cell_size, facet_size);
     throw Invalid_input(std::string("mesh_interior: the sizes ask for ") + text + "; give larger sizes" +
                         (maximum_given ? "" : ", or a larger maximum_number_of_vertices"));
   }
@@ -195,7 +202,7 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
   if(sizes.sharp_edge_angle < 180) domain.detect_features(sizes.sharp_edge_angle);
 
   // What Mesh_3 would not mesh, or not in bounded time and memory, is refused before it starts.
-  check_thickness_of_parts(checked, sizes.facet_distance);
+  check_thickness_of_parts(checked, sizes.facet_size, sizes.facet_distance);
   check_components_apart(checked, sizes.facet_distance);
   check_sharp_edges_apart(checked, sizes.sharp_edge_angle, sizes.facet_distance, sizes.edge_size);
   check_vertex_budget(settings, sizes.cell_size, sizes.facet_size);
@@ -213,7 +220,7 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
                                           mp::pointer_to_stop_atomic_boolean = deadline.flag());
   typename Types::C3T3 c3t3 = CGAL::make_mesh_3<typename Types::C3T3>(
     domain, criteria, mp::features(domain), mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(), options);
-  deadline.check(settings.time_limit);
+  deadline.check();
   check_mesh_3_error(error, settings.maximum_vertices);
 
   // Components that Mesh_3's initial points missed get seeds, and the refinement goes on from the
@@ -224,7 +231,7 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
     insert_seeds(c3t3, seeds);
     CGAL::refine_mesh_3(c3t3, domain, criteria, mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(),
                         mp::no_reset_c3t3(), options);
-    deadline.check(settings.time_limit);
+    deadline.check();
     check_mesh_3_error(error, settings.maximum_vertices);
     seeds_of_missed_components(c3t3, domain, checked.surface, checked.component, missed);
   }

@@ -56,11 +56,15 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
   // Peeling keeps these: a cap's new boundary facets have its four vertices, already on the surface.
   const auto boundary_vertices = boundary_vertices_in_order(c3t3);
   const std::unordered_set<Vertex_handle> surface_vertex(boundary_vertices.begin(), boundary_vertices.end());
+  // A cap's peeling can make caps only of its neighbours: after a pass over every cell, the passes
+  // look at those alone (a pass over every cell each time took minutes on thin volumes).
+  std::vector<Cell_handle> candidates;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) candidates.push_back(c);
   std::size_t peeled = 0;
-  for(bool more = true; more;) {
-    more = false;
+  while(!candidates.empty()) {
     std::vector<Cell_handle> caps;
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    for(Cell_handle c : candidates) {
+      if(!c3t3.is_in_complex(c)) continue;
       int facets = 0;
       for(int i = 0; i < 4; ++i) facets += is_boundary_facet(c3t3, c, i) ? 1 : 0;
       if(facets != 2) continue;
@@ -73,6 +77,8 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
       const double volume = std::abs(cell_volume(c3t3, c));
       if(3 * volume < (std::min)(thickness, 0.1 * std::sqrt(boundary_area)) * boundary_area) caps.push_back(c);
     }
+    std::vector<Cell_handle> next;
+    std::unordered_set<Cell_handle> queued;
     for(Cell_handle c : caps) {
       // The vertices opposite the boundary facets span the edge that the inner facets share.
       int opposite[2], k = 0;
@@ -81,8 +87,10 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
       if(k != 2 || !c3t3.is_in_complex(c) || on_boundary(c, opposite[0], opposite[1])) continue;   // (an earlier peel may have changed it)
       set_in_complex(c3t3, c, false, c3t3.subdomain_index(c), c3t3.surface_patch_index(c, opposite[0]));
       ++peeled;
-      more = true;
+      for(int i = 0; i < 4; ++i)
+        if(c3t3.is_in_complex(c->neighbor(i)) && queued.insert(c->neighbor(i)).second) next.push_back(c->neighbor(i));
     }
+    candidates.swap(next);
   }
   return peeled;
 }
