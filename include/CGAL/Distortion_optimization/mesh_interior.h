@@ -444,9 +444,9 @@ h / 10.
 \throws Invalid_input, naming the offending input element, if `surface` is empty, has a face
 that is not a triangle, a non-finite coordinate or one beyond 1e100 in magnitude, a border edge, a non-manifold vertex, a
 degenerate face or two faces that cross, encloses no volume, is thinner than the facet distance
-(its mean thickness, 2 volume / area, is smaller) or, as a slab (thinner than a tenth of the cube
-root of its volume), than half the facet size (a plate 0.02 thick meshed at a facet size of 0.058
-came out with touching tetrahedra, at 0.035 it came out right), or
+(its mean thickness, 2 volume / area, is smaller) or, as a slab (a surface whose faces spread ten
+times less in one direction than in the others), than half the facet size (a plate 0.02 thick
+meshed at a facet size of 0.058 came out with touching tetrahedra, at 0.035 it came out right), or
 has a component that is (2 |volume| / area of that component; the error names one of its faces),
 has two components closer than the facet
 distance (the error names a face of each) or two sharp edges (those protected, see
