@@ -38,8 +38,9 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     // The library's remedies name its parameters; the tool's user has --cell-size (the facet size,
     // and ten times the facet distance).
     std::string what = e.what();
-    if(const auto size = what.find("; give a facet size below "); size != std::string::npos)   // the number stays
-      what.replace(size, 26, "; give a --cell-size below ");
+    const std::string facet_size = "; give a facet size below ";
+    if(const auto at = what.find(facet_size); at != std::string::npos)   // the number stays
+      what.replace(at, facet_size.size(), "; give a --cell-size below ");
     for(const auto& [library, tool] : {std::pair<std::string, std::string>("; give larger sizes", "; give a larger --cell-size"),
                                        {"; give sizes below their distance", "; give a --cell-size below 10 times their distance"},
                                        {"; try a larger sharp_edge_angle",   // (a smaller --cell-size would ask for more vertices)

@@ -384,40 +384,47 @@ inline void check_PLY(const std::string& bytes, const std::string& shown)
   const auto bad_count = [&](const Element& element, unsigned long long i, const std::string& count, const std::string& why) {
     throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has a list of " + count + " entries" + why);
   };
-  // Reads a value of `type` for property `name` of instance i of `element`; where CGAL's reader
-  // would fail (and, in a face element, go on reading the next elements from a failed stream, into
-  // uninitialized counts), says why. `text` gets the value as written in an ASCII file.
-  std::string text;
-  const auto value = [&](const Element& element, unsigned long long i, const std::string& name, const std::string& type) {
-    const std::size_t position = in.eof() ? bytes.size() : at + static_cast<std::size_t>(in.tellg());
-    const std::size_t begin = (std::min)(bytes.find_first_not_of(" \t\r\n\v\f", position), bytes.size());
-    if(mode == 0) text = bytes.substr(begin, bytes.find_first_of(" \t\r\n\v\f", begin) - begin);
+  const char* const space = " \t\r\n\v\f";
+  // The token of an ASCII file at `position` (after blanks), as written; `position` is where the
+  // last value read below began.
+  std::size_t position = 0;
+  const auto token_at = [&](std::size_t from) {
+    const std::size_t begin = (std::min)(bytes.find_first_not_of(space, from), bytes.size());
+    return bytes.substr(begin, bytes.find_first_of(space, begin) - begin);
+  };
+  // Reads a value of `type` for `role` (empty, "the count of ", "an entry of ") property `name` of
+  // instance i of `element`; where CGAL's reader would fail (and, in a face element, go on reading
+  // the next elements from a failed stream, into uninitialized counts), says why.
+  const auto value = [&](const Element& element, unsigned long long i, const char* role, const std::string& name,
+                         const std::string& type) {
+    position = in.eof() ? bytes.size() : at + static_cast<std::size_t>(in.tellg());
     const std::optional<long double> v = read_PLY_value(in, type, mode);
-    if(!v && (mode == 0 ? text.empty() : bytes.size() - position < PLY_type_size(type)))
+    if(v) return *v;
+    const std::string text = mode == 0 ? token_at(position) : std::string();
+    if(mode == 0 ? text.empty() : bytes.size() - position < PLY_type_size(type))
       throw Invalid_input(shown + ": the file ends before the " + std::to_string(announced) + " elements the header announces");
-    if(!v)
-      throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has '" + printable(text) + "' for " + name +
-                          ", not a number of type " + type);
-    return *v;
+    throw Invalid_input(shown + ": " + element.name + " " + std::to_string(i) + " has '" + printable(text) + "' for " + role +
+                        name + ", not a number of type " + type);
   };
   for(const Element& element : elements)
     for(unsigned long long i = 0; i < element.count && !element.properties.empty(); ++i)
       for(const Property& p : element.properties) {
         if(p.count_type.empty()) {
-          value(element, i, p.name, p.type);
+          value(element, i, "", p.name, p.type);
           continue;
         }
-        const long double n = value(element, i, "the count of " + p.name, p.count_type);
+        const long double n = value(element, i, "the count of ", p.name, p.count_type);
         // (In an ASCII file, the number as written: CGAL converts it to the count's type.)
+        const std::string text = mode == 0 ? token_at(position) : std::string();
         const std::string count = mode == 0 ? printable(text) : std::to_string(static_cast<long long>(n));
         if(n < 0 || (mode == 0 && text[0] == '-' && text.find_first_not_of("-0") != std::string::npos)) bad_count(element, i, count, "");
         // Each entry takes a character and a separator at least, or its size in binary.
         const std::size_t left = in.eof() ? 0 : bytes.size() - at - static_cast<std::size_t>(in.tellg());
         if(n > (mode == 0 ? (left + 1) / 2 : left / PLY_type_size(p.type))) bad_count(element, i, count, ", more than the file holds");
-        for(long double k = 0; k < n; ++k) value(element, i, "an entry of " + p.name, p.type);
+        for(long double k = 0; k < n; ++k) value(element, i, "an entry of ", p.name, p.type);
       }
   if(in.eof()) return;
-  const std::size_t end = at + static_cast<std::size_t>(in.tellg()), extra = bytes.find_first_not_of(" \t\r\n\v\f", end);
+  const std::size_t end = at + static_cast<std::size_t>(in.tellg()), extra = bytes.find_first_not_of(space, end);
   if(extra == std::string::npos) return;
   const std::string after = "content after the " + std::to_string(announced) + " elements the header announces";
   if(mode == 0)
