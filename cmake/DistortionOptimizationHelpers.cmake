@@ -7,7 +7,9 @@
 #   distortion_add_library(NAME src...)   a static library the above may link
 #
 # Each creates the executable target NAME linking CGAL::Distortion_optimization (plus
-# CGAL::TBB_support and the define DISTORTION_OPTIMIZATION_HAS_TBB when TBB was found), with
+# CGAL::TBB_support and the define DISTORTION_OPTIMIZATION_HAS_TBB when TBB was found, and
+# Distortion_optimization::CHOLMOD_support when CHOLMOD was found, unless NAME ends in
+# _without_cholmod), with
 # -Wall -Wextra -Wno-maybe-uninitialized and DISTORTION_OPTIMIZATION_DATA_DIR="<build>/data". Optional LIBRARIES are linked
 # PRIVATE (e.g. Distortion_optimization::TetGen, guarded by if(TARGET ...)).
 # Binaries land at fixed paths, whatever the generator or the calling directory:
@@ -25,6 +27,9 @@ function(_distortion_link_package name scope)
   if(TARGET CGAL::TBB_support)
     target_link_libraries(${name} ${scope} CGAL::TBB_support)
     target_compile_definitions(${name} ${scope} DISTORTION_OPTIMIZATION_HAS_TBB)
+  endif()
+  if(TARGET Distortion_optimization::CHOLMOD_support AND NOT name MATCHES "_without_cholmod$")
+    target_link_libraries(${name} ${scope} Distortion_optimization::CHOLMOD_support)
   endif()
   target_compile_options(${name} PRIVATE
     "$<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall;-Wextra;-Wno-maybe-uninitialized>")
@@ -59,7 +64,10 @@ function(distortion_add_test name)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY "${PROJECT_BINARY_DIR}/test/Distortion_optimization"
     DISCOVERY_TIMEOUT 60
-    PROPERTIES RESOURCE_LOCK distortion_temporary_folder)
+    PROPERTIES RESOURCE_LOCK distortion_temporary_folder
+               # CHOLMOD's BLAS threads spin while they wait: beside the other tests of `ctest -j`
+               # they would slow every factorization down.
+               ENVIRONMENT OPENBLAS_NUM_THREADS=1)
 endfunction()
 
 function(distortion_add_example name)

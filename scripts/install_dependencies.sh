@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ccache
   libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
   libtet1.5-dev libgtest-dev libbenchmark-dev
+  libsuitesparse-dev libmetis-dev libopenblas-dev  # CHOLMOD, its METIS ordering and BLAS: triangle maps' Newton systems
   doxygen       # the manual, built by scripts/test.sh (any warning fails it)
   libcgal-demo  # ships /usr/share/doc/libcgal-dev/data.tar.gz (real meshes); no Qt without recommends
 )

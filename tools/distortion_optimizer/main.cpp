@@ -11,6 +11,8 @@
 #include "staged_output.h"
 #include "tool.h"
 
+#include <dlfcn.h>
+
 #include <future>
 #include <iostream>
 #include <memory>
@@ -45,6 +47,17 @@ void check_threads(std::size_t n)
                             std::to_string(threads.size() + 1) + " under this machine's limits): give fewer");
 }
 
+// The BLAS of CHOLMOD's factorizations (OpenBLAS, and the OpenMP of CHOLMOD itself) starts a
+// thread per core when loaded and lets them spin while they wait: beside other work, each
+// factorization then took many times longer. The tool gives them --threads, as it does TBB.
+// Looked up at run time: a build without CHOLMOD, or another BLAS, has neither.
+void limit_solver_threads(std::size_t n)
+{
+  using Setter = void (*)(int);
+  for(const char* name : {"openblas_set_num_threads", "omp_set_num_threads"})
+    if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, name))) set(static_cast<int>(n));
+}
+
 // All outputs or none: each output gets a temporary name beside it before any input is read (so a
 // folder that cannot be written fails first), the run writes there, and the files are renamed
 // only when every one was written (after the outputs into devices, whose writes may still fail).
@@ -66,6 +79,7 @@ int run(const Command_line& c)
       staged.*outputs[i] = files[i]->path();
     }
   check_threads(c.threads);
+  limit_solver_threads(c.threads);
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   int status = 0;
   try {

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// Start maps for surface parametrization, from CGAL's Surface_mesh_parameterization package, so
-// that "parameterize, then improve" is two calls:
+// Start maps for surface parametrization, with the borders of CGAL's Surface_mesh_parameterization
+// package (Tutte's map solved by the package's own sparse Cholesky solve, the discrete conformal
+// map by CGAL's parameterizer), so that "parameterize, then improve" is two calls:
 //   CGAL::Distortion_optimization::initial_parameterization(mesh, uv);
 //   CGAL::minimize_distortion(mesh, uv, CGAL::Distortion_optimization::Symmetric_dirichlet());
 
@@ -14,13 +15,13 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
+#include <CGAL/Distortion_optimization/internal/tutte_embedding.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
@@ -66,13 +67,13 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(border_shape_t, border_shape)
 
 namespace internal {
 
-template <class TriangleMesh, class UVMap, class Parameterizer>
-void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& parameterizer)
+// The longest border of tm, after checking that tm is one piece with a border (CGAL's
+// parameterizers map the piece of the border only: the others would stay where uv had them).
+template <class TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor longest_border_of_disk(const TriangleMesh& tm)
 {
-  namespace SMP = CGAL::Surface_mesh_parameterization;
   if(num_faces(tm) == 0)
     throw Invalid_input("the mesh has no face");
-  // CGAL's parameterizers map the piece of the border only: the others would stay where uv had them.
   const std::size_t pieces =
     CGAL::Polygon_mesh_processing::connected_components(tm, get(CGAL::dynamic_face_property_t<std::size_t>(), tm));
   if(pieces != 1)
@@ -81,10 +82,61 @@ void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& pa
   const auto border = CGAL::Polygon_mesh_processing::longest_border(tm).first;
   if(border == boost::graph_traits<TriangleMesh>::null_halfedge())
     throw Invalid_input("the mesh has no border: a disk (genus 0, one border) is needed to parameterize it");
+  return border;
+}
+
+template <class TriangleMesh, class UVMap, class Parameterizer>
+void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& parameterizer)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  const auto border = longest_border_of_disk(tm);
   // CGAL's parameterizers take a non-const mesh but do not modify it.
   const SMP::Error_code status = SMP::parameterize(const_cast<TriangleMesh&>(tm), parameterizer, border, uv);
   if(status != SMP::OK)
     throw Invalid_input(std::string("the parameterization failed: ") + SMP::get_error_message(status));
+}
+
+// Tutte's map as CGAL's Barycentric_mapping_parameterizer_3 defines it (the longest border placed
+// by `border_parameterizer`, every other vertex at the mean of its neighbours), solved as the
+// symmetric positive definite system of the inner vertices alone by the package's one Tutte solve
+// (barycentric_positions()) rather than CGAL's unsymmetric system of all vertices and its
+// iterative solver.
+template <class TriangleMesh, class UVMap, class BorderParameterizer>
+void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterizer border_parameterizer)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  using Point_2 = typename boost::property_traits<UVMap>::value_type;
+  const auto border = longest_border_of_disk(tm);
+  const auto index = get(CGAL::dynamic_vertex_property_t<int>(), tm);
+  const auto placed = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex;
+  for(auto v : vertices(tm)) {
+    put(index, v, static_cast<int>(vertex.size()));
+    put(placed, v, false);
+    vertex.push_back(v);
+  }
+  const SMP::Error_code status = border_parameterizer.parameterize(tm, border, uv, index, placed);
+  if(status != SMP::OK)
+    throw Invalid_input(std::string("the parameterization failed: ") + SMP::get_error_message(status));
+  std::vector<std::vector<std::uint32_t>> neighbours(vertex.size());
+  std::vector<int> column(vertex.size(), -1);
+  std::vector<Vector<2>> x(vertex.size(), Vector<2>::Zero());
+  int size = 0;
+  for(std::size_t i = 0; i < vertex.size(); ++i) {
+    if(halfedge(vertex[i], tm) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue;   // isolated: left alone
+    if(get(placed, vertex[i])) {
+      const Point_2 p = get(uv, vertex[i]);
+      x[i] = Vector<2>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    } else {
+      column[i] = size++;
+    }
+    for(auto w : CGAL::vertices_around_target(halfedge(vertex[i], tm), tm))
+      neighbours[i].push_back(static_cast<std::uint32_t>(get(index, w)));
+  }
+  if(!barycentric_positions(neighbours, column, size, x))
+    throw Invalid_input(std::string("the parameterization failed: ") + SMP::get_error_message(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM));
+  for(std::size_t i = 0; i < vertex.size(); ++i)
+    if(column[i] >= 0) put(uv, vertex[i], Point_2(x[i][0], x[i][1]));
 }
 
 } // namespace internal
@@ -138,7 +190,7 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParam
   auto run = [&](auto border_parameterizer) {
     using Border = decltype(border_parameterizer);
     if(kind == Initial_map::TUTTE)
-      internal::run_parameterizer(tm, uv, SMP::Barycentric_mapping_parameterizer_3<TriangleMesh, Border>());
+      internal::tutte_parameterization(tm, uv, border_parameterizer);
     else
       internal::run_parameterizer(tm, uv, SMP::Discrete_conformal_map_parameterizer_3<TriangleMesh, Border>());
   };

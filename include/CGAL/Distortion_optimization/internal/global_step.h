@@ -37,13 +37,12 @@
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cell_hessian.h>
-#include <CGAL/Distortion_optimization/internal/block_amd_ordering.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 #include <CGAL/Distortion_optimization/internal/newton_model.h>
+#include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
 #include <CGAL/Distortion_optimization/internal/step_bound.h>
 
 #include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
@@ -171,7 +170,6 @@ private:
     if constexpr(std::is_same<Model, Measure>::value) return model_ ? *model_ : state_.measure();
     else return *model_;
   }
-  using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_AMD_ordering<n>>;
 
   bool step_along(bool newton)
   {
@@ -370,25 +368,18 @@ private:
   void solve_by_factorization(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& b, Eigen::MatrixXd& solution)
   {
     bool solved = false;
-    if(lagged_.tries() && factorization_) {
-      solved = system_.solve(H, *factorization_, b, solution, 6, 1e-3) && solution.allFinite();
+    if(lagged_.tries() && factorization_.is_factored()) {
+      solved = system_.solve(H, factorization_, b, solution, 6, 1e-3) && solution.allFinite();
       solved ? lagged_.succeeded() : lagged_.failed();
     }
     if(!solved) {
-      if(!factorization_) {
-        factorization_ = std::make_unique<Factorization>();
-        factorization_->analyzePattern(H);
-      }
       // A shift of 1e-10 of the mean diagonal keeps H definite where whole modes were dropped or
-      // nothing is fixed (translations).
-      factorization_->setShift(1e-10 * H.diagonal().mean());
-      factorization_->factorize(H);
-      if(factorization_->info() != Eigen::Success) {
-        factorization_.reset();
+      // nothing is fixed (translations). The pattern is analyzed at the first factorization only.
+      if(!factorization_.factorize(H, 1e-10 * H.diagonal().mean())) {
         solution.setConstant(std::numeric_limits<double>::quiet_NaN());
         return;
       }
-      solution = factorization_->solve(b);
+      solution = factorization_.solve(b);
     }
   }
 
@@ -523,7 +514,7 @@ private:
   // (see solve_newton_system).
   static constexpr int newton_iterations = 60;
   int jacobi_iterations_ = newton_iterations;
-  std::unique_ptr<Factorization> factorization_;
+  Sparse_cholesky<n> factorization_;
   std::unique_ptr<typename Laplacian_system<n>::Coordinatewise_laplacian> laplacian_preconditioner_;
   // The lagged factorization's solves, a model's steps, a measure's own Laplacian steps.
   Backoff lagged_, model_steps_, laplacian_steps_;

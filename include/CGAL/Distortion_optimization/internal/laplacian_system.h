@@ -19,11 +19,11 @@
 
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
 #include <CGAL/Distortion_optimization/internal/parallel.h>
+#include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
 #include <CGAL/assertions.h>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
@@ -287,8 +287,8 @@ public:
     if constexpr(n == 2) {
       // A planar Laplacian fills in little: a sparse LDL^T is several times faster than the
       // conjugate gradients below.
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(P_);
-      if(factorization.info() != Eigen::Success) return false;
+      Sparse_cholesky<1> factorization;
+      if(!factorization.factorize(P_)) return false;
       X = factorization.solve(rhs);
     } else {
       for(std::size_t v = 0; v < x.size(); ++v)

@@ -18,10 +18,11 @@
 #include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
+#include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/Sparse>
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +34,35 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
+
+// Tutte's barycentric positions: each vertex v with column[v] >= 0 (the unknowns, numbered 0 to
+// size - 1) at the mean of its neighbours, the others where x has them. One symmetric positive
+// definite system (the uniform Laplacian of the unknowns) solved for both coordinates by the
+// package's sparse Cholesky factorization; false if that fails. The one Tutte solve of the package:
+// tutte_embedding() below and initial_parameterization()'s default start.
+inline bool barycentric_positions(const std::vector<std::vector<std::uint32_t>>& neighbours, const std::vector<int>& column,
+                                  int size, std::vector<Vector<2>>& x)
+{
+  if(size == 0) return true;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(size, 2);
+  for(std::size_t v = 0; v < neighbours.size(); ++v) {
+    if(column[v] < 0) continue;
+    entries.emplace_back(column[v], column[v], double(neighbours[v].size()));
+    for(std::uint32_t w : neighbours[v])
+      if(column[w] >= 0) entries.emplace_back(column[v], column[w], -1.);
+      else rhs.row(column[v]) += x[w].transpose();
+  }
+  Eigen::SparseMatrix<double> L(size, size);
+  L.setFromTriplets(entries.begin(), entries.end());
+  Sparse_cholesky<1> factorization;
+  if(!factorization.factorize(L)) return false;
+  const Eigen::MatrixXd X = factorization.solve(rhs);
+  if(!X.allFinite()) return false;
+  for(std::size_t v = 0; v < neighbours.size(); ++v)
+    if(column[v] >= 0) x[v] = X.row(column[v]).transpose();
+  return true;
+}
 
 // Whether the constrained vertices of p are those of the boundary `loop` (`constrained` of them)
 // and their targets, in the loop's order, never turn right nor back (exact predicate) and turn once
@@ -142,25 +172,7 @@ inline bool tutte_embedding(const Optimization_problem<2>& p, double typical_det
   int size = 0;
   for(std::size_t v = 0; v < nv; ++v)
     if(column[v] == -1) column[v] = size++;
-  if(size > 0) {
-    std::vector<Eigen::Triplet<double>> entries;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(size, 2);
-    for(std::size_t v = 0; v < nv; ++v) {
-      if(column[v] < 0) continue;
-      entries.emplace_back(column[v], column[v], double(neighbours[v].size()));
-      for(std::uint32_t w : neighbours[v])
-        if(column[w] >= 0) entries.emplace_back(column[v], column[w], -1.);
-        else rhs.row(column[v]) += x[w].transpose();
-    }
-    Eigen::SparseMatrix<double> L(size, size);
-    L.setFromTriplets(entries.begin(), entries.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(L);
-    if(factorization.info() != Eigen::Success) return false;
-    const Eigen::MatrixXd X = factorization.solve(rhs);
-    if(!X.allFinite()) return false;
-    for(std::size_t v = 0; v < nv; ++v)
-      if(column[v] >= 0) x[v] = X.row(column[v]).transpose();
-  }
+  if(!barycentric_positions(neighbours, column, size, x)) return false;
 
   // The affine map, or the similarity (rotation, scale, translation), back to the constrained
   // targets: orientations kept.

@@ -1,0 +1,190 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The package's sparse direct solver for symmetric positive definite systems: the triangle maps'
+// Newton systems (global_step.h), their harmonic starts (laplacian_system.h) and Tutte's
+// embedding (tutte_embedding.h). With CHOLMOD (SuiteSparse; the CMake target
+// Distortion_optimization::CHOLMOD_support defines CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD)
+// a supernodal Cholesky factorization, whose dense blocks go through the BLAS: several times
+// faster than a simplicial one from some ten thousand unknowns on (Chen, Davis, Hager and
+// Rajamanickam, "Algorithm 887: CHOLMOD, supernodal sparse Cholesky factorization and
+// update/downdate", 2008). Without it, Eigen's simplicial LDL^T. Either way the symbolic analysis
+// is done once per pattern and each numeric factorization reuses it.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SPARSE_CHOLESKY_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SPARSE_CHOLESKY_H
+
+#include <CGAL/license/Distortion_optimization.h>
+
+#include <CGAL/Distortion_optimization/internal/block_amd_ordering.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+// CHOLMOD's supernodal LL^T with a METIS nested-dissection ordering of the graph of the blocks (a
+// vertex's `block` unknowns kept together): the graph is block^2 times smaller than the matrix,
+// and METIS's ordering, whose cost the analysis is, takes a fraction of the time it takes on the
+// matrix, for a factor as sparse. Eigen's CholmodSupernodalLLT but for the analysis.
+template <int block>
+class Block_ordered_supernodal_llt
+  : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Block_ordered_supernodal_llt<block>>
+{
+  using Base = Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Block_ordered_supernodal_llt<block>>;
+  using Base::m_analysisIsOk;
+  using Base::m_cholmod;
+  using Base::m_cholmodFactor;
+  using Base::m_factorizationIsOk;
+  using Base::m_info;
+
+public:
+  Block_ordered_supernodal_llt()
+  {
+    m_cholmod.final_asis = 1;
+    m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
+  }
+
+  void analyzePattern(const Eigen::SparseMatrix<double>& A)
+  {
+    if(m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &m_cholmod);
+    m_cholmodFactor = nullptr;
+    const int blocks = static_cast<int>(A.rows()) / block;
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(A.nonZeros()) / (block * block) + 1);
+    for(int j = 0; j < blocks; ++j)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(A, block * j); it; ++it)
+        if(it.index() % block == 0 && it.index() / block > j) entries.emplace_back(static_cast<int>(it.index()) / block, j, 1.);
+    Eigen::SparseMatrix<double> graph(blocks, blocks);
+    graph.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SparseMatrix<double>& lower = graph;
+    cholmod_sparse G = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    std::vector<int> block_order(static_cast<std::size_t>(blocks)), order(static_cast<std::size_t>(A.rows()));
+    bool ok = blocks == 0 || cholmod_metis(&G, nullptr, 0, 1, block_order.data(), &m_cholmod);
+    for(int i = 0; i < blocks; ++i)
+      for(int a = 0; a < block; ++a) order[static_cast<std::size_t>(block * i + a)] = block * block_order[i] + a;
+    if(ok) {
+      cholmod_sparse M = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+      m_cholmod.nmethods = 1;
+      m_cholmod.method[0].ordering = CHOLMOD_GIVEN;
+      m_cholmodFactor = cholmod_analyze_p(&M, order.data(), nullptr, 0, &m_cholmod);
+      ok = m_cholmodFactor != nullptr;
+    }
+    this->m_isInitialized = true;
+    m_info = ok ? Eigen::Success : Eigen::NumericalIssue;
+    m_analysisIsOk = ok;
+    m_factorizationIsOk = false;
+  }
+};
+#endif
+
+// A Cholesky factorization of a symmetric positive definite matrix whose unknowns come in groups
+// of `block` (a vertex's coordinates), kept together by the fill-reducing ordering. Reads the lower
+// triangle. Usable as a preconditioner (solve). Below `cholmod_from` unknowns Eigen's simplicial
+// LDL^T is used even with CHOLMOD: a supernodal factorization's overhead outweighs its dense
+// blocks there (bench_sparse_solvers: 16.6K unknowns 0.029 s against 0.061 s per factorization,
+// 133K unknowns 0.33 s against 0.24 s).
+template <int block>
+class Sparse_cholesky
+{
+public:
+  static constexpr int default_cholmod_from = 65536;
+
+  explicit Sparse_cholesky(int cholmod_from = default_cholmod_from) : cholmod_from_(cholmod_from) {}
+
+  // The symbolic analysis of A's pattern: once, before the first factorize (again if the pattern changes).
+  void analyze(const Eigen::SparseMatrix<double>& A)
+  {
+    simplicial_.reset();
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    supernodal_.reset();
+    if(A.rows() >= cholmod_from_) {
+      supernodal_ = std::make_unique<Supernodal>();
+      supernodal_->analyzePattern(A);
+      analyzed_ = supernodal_->info() == Eigen::Success;
+      return;
+    }
+#endif
+    simplicial_ = std::make_unique<Simplicial>();
+    simplicial_->analyzePattern(A);
+    analyzed_ = simplicial_->info() == Eigen::Success;
+  }
+
+  // Whether the analyzed pattern is factored by CHOLMOD.
+  bool uses_cholmod() const
+  {
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    return supernodal_ != nullptr;
+#else
+    return false;
+#endif
+  }
+
+  // Factors A + shift I, A with the analyzed pattern (analyzes it if that was not done); false if
+  // that fails: A + shift I not positive definite to rounding (Eigen's LDL^T would go on with
+  // negative pivots; it is refused as CHOLMOD's LL^T refuses it), or out of memory.
+  bool factorize(const Eigen::SparseMatrix<double>& A, double shift = 0)
+  {
+    if(A.rows() == 0) return factored_ = true;
+    if(!simplicial_ && !uses_cholmod()) analyze(A);
+    if(!analyzed_) return factored_ = false;
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    if(supernodal_) {
+      supernodal_->setShift(shift);
+      supernodal_->factorize(A);
+      return factored_ = supernodal_->info() == Eigen::Success;
+    }
+#endif
+    simplicial_->setShift(shift);
+    simplicial_->factorize(A);
+    return factored_ = simplicial_->info() == Eigen::Success && simplicial_->vectorD().minCoeff() > 0;
+  }
+
+  bool is_factored() const { return factored_; }
+
+  // (A + shift I)^-1 b, after a successful factorize.
+  template <class Rhs>
+  Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
+  {
+    if(b.rows() == 0) return b;
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    if(supernodal_) return supernodal_->solve(b);
+#endif
+    return simplicial_->solve(b);
+  }
+
+  // The nonzeros of the factor (for benchmarks).
+  double factor_nonzeros() const
+  {
+    if(!factored_) return 0;
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    if(supernodal_) return supernodal_->cholmod().lnz;
+#endif
+    return simplicial_ ? double(simplicial_->matrixL().nestedExpression().nonZeros()) : 0.;
+  }
+
+private:
+  using Simplicial = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_AMD_ordering<block>>;
+  int cholmod_from_;
+  std::unique_ptr<Simplicial> simplicial_;
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+  using Supernodal = Block_ordered_supernodal_llt<block>;
+  std::unique_ptr<Supernodal> supernodal_;
+#endif
+  bool analyzed_ = false, factored_ = false;
+};
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_SPARSE_CHOLESKY_H
