@@ -47,15 +47,21 @@ void check_threads(std::size_t n)
                             std::to_string(threads.size() + 1) + " under this machine's limits): give fewer");
 }
 
-// The BLAS of CHOLMOD's factorizations (OpenBLAS, and the OpenMP of CHOLMOD itself) starts a
-// thread per core when loaded and lets them spin while they wait: beside other work, each
-// factorization then took many times longer. The tool gives them --threads, as it does TBB.
-// Looked up at run time: a build without CHOLMOD, or another BLAS, has neither.
+// The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
+// them spin while they wait: beside other work, each factorization then took many times longer.
+// CHOLMOD's own OpenMP loops ask for a fixed number of threads, which only an inactive level of
+// parallelism overrides; on one thread their wake-ups were a tenth of a run. The tool gives both
+// its --threads, as it does TBB. Looked up at run time: a build without CHOLMOD, or with another
+// BLAS, has neither.
 void limit_solver_threads(std::size_t n)
 {
   using Setter = void (*)(int);
-  for(const char* name : {"openblas_set_num_threads", "omp_set_num_threads"})
-    if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, name))) set(static_cast<int>(n));
+  const auto call = [](const char* name, int value) {
+    if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, name))) set(value);
+  };
+  call("openblas_set_num_threads", static_cast<int>(n));
+  call("omp_set_num_threads", static_cast<int>(n));
+  if(n == 1) call("omp_set_max_active_levels", 0);
 }
 
 // All outputs or none: each output gets a temporary name beside it before any input is read (so a
