@@ -50,7 +50,7 @@ void check_threads(std::size_t n)
 // The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
 // them spin while they wait: beside other work, each factorization then took many times longer.
 // CHOLMOD's own OpenMP loops ask for a fixed number of threads, which only an inactive level of
-// parallelism overrides; on one thread their wake-ups were a tenth of a run. The tool gives both
+// parallelism overrides; on one thread their wake-ups cost a large share of a run. The tool gives both
 // its --threads, as it does TBB. Looked up at run time: a build without CHOLMOD, or with another
 // BLAS, has neither.
 void limit_solver_threads(std::size_t n)
