@@ -50,9 +50,9 @@ void check_threads(std::size_t n)
 // The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
 // them spin while they wait: beside other work, each factorization then took many times longer.
 // CHOLMOD's own OpenMP loops ask for a fixed number of threads, which only an inactive level of
-// parallelism overrides; on one thread their wake-ups cost a large share of a run. The tool gives both
-// its --threads, as it does TBB. Looked up at run time: a build without CHOLMOD, or with another
-// BLAS, has neither.
+// parallelism overrides (the only OpenMP in the tool); on one thread their wake-ups cost a large
+// share of a run. The tool gives both its --threads, as it does TBB. Looked up at run time: a
+// build without CHOLMOD, or with another BLAS, has neither.
 void limit_solver_threads(std::size_t n)
 {
   using Setter = void (*)(int);
@@ -60,7 +60,6 @@ void limit_solver_threads(std::size_t n)
     if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, name))) set(value);
   };
   call("openblas_set_num_threads", static_cast<int>(n));
-  call("omp_set_num_threads", static_cast<int>(n));
   if(n == 1) call("omp_set_max_active_levels", 0);
 }
 

@@ -59,15 +59,9 @@ public:
     if(m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &m_cholmod);
     m_cholmodFactor = nullptr;
     const int blocks = static_cast<int>(A.rows()) / block;
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(static_cast<std::size_t>(A.nonZeros()) / (block * block) + 1);
-    for(int j = 0; j < blocks; ++j)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(A, block * j); it; ++it)
-        if(it.index() % block == 0 && it.index() / block > j) entries.emplace_back(static_cast<int>(it.index()) / block, j, 1.);
-    Eigen::SparseMatrix<double> graph(blocks, blocks);
-    graph.setFromTriplets(entries.begin(), entries.end());
-    const Eigen::SparseMatrix<double>& lower = graph;
-    cholmod_sparse G = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    // CHOLMOD reads its lower triangle; METIS ignores the diagonal.
+    const Eigen::SparseMatrix<double> graph = block_graph<block>(A);
+    cholmod_sparse G = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
     std::vector<int> block_order(static_cast<std::size_t>(blocks)), order(static_cast<std::size_t>(A.rows()));
     bool ok = blocks == 0 || cholmod_metis(&G, nullptr, 0, 1, block_order.data(), &m_cholmod);
     for(int i = 0; i < blocks; ++i)
