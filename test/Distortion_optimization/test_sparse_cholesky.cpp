@@ -9,8 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -161,4 +163,46 @@ TEST(SparseCholesky, EmptySystem)
   DOI::Sparse_cholesky<2> cholesky(cholmod_always);
   EXPECT_TRUE(cholesky.factorize(Sparse(0, 0)));
   EXPECT_EQ(cholesky.solve(Eigen::VectorXd(0)).rows(), 0);
+}
+
+// The harmonic start's order of the vertices, taken by the Newton system's analysis (same graph
+// of vertices, two unknowns each): the same order as the Newton system's own, hence the same
+// factor; an order of the wrong length is not taken. Eigen's path has none.
+TEST(SparseCholesky, AnalysisTakesTheOrderOfAnotherOnTheSameGraph)
+{
+  const Sparse laplacian = lion_head_system(1), newton = lion_head_system(2);
+  DOI::Sparse_cholesky<1> harmonic(cholmod_always);
+  harmonic.analyze(laplacian);
+  ASSERT_TRUE(harmonic.factorize(laplacian));
+  const std::vector<int>& order = harmonic.block_order();
+  if(!harmonic.uses_cholmod()) {
+    EXPECT_TRUE(order.empty());
+    return;
+  }
+  ASSERT_EQ(static_cast<Eigen::Index>(order.size()), laplacian.rows());
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for(std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], static_cast<int>(i));
+
+  DOI::Sparse_cholesky<2> own(cholmod_always), given(cholmod_always), wrong_length(cholmod_always);
+  own.analyze(newton);
+  given.analyze(newton, order);
+  wrong_length.analyze(newton, std::vector<int>(order.begin(), order.end() - 1));
+  for(DOI::Sparse_cholesky<2>* cholesky : {&own, &given, &wrong_length}) ASSERT_TRUE(cholesky->factorize(newton));
+  EXPECT_EQ(given.block_order(), order);
+  EXPECT_EQ(own.block_order(), order);
+  EXPECT_EQ(wrong_length.block_order(), order);
+  EXPECT_EQ(given.factor_nonzeros(), own.factor_nonzeros());
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(newton.rows(), 2, -1);
+  EXPECT_LT(relative_residual(newton, given.solve(b), b), 1e-10);
+
+  // An order that is not METIS's still gives the solution, with more fill: the identity.
+  std::vector<int> identity(order.size());
+  std::iota(identity.begin(), identity.end(), 0);
+  DOI::Sparse_cholesky<2> natural(cholmod_always);
+  natural.analyze(newton, identity);
+  ASSERT_TRUE(natural.factorize(newton));
+  EXPECT_EQ(natural.block_order(), identity);
+  EXPECT_GT(natural.factor_nonzeros(), 2 * own.factor_nonzeros());
+  EXPECT_LT(relative_residual(newton, natural.solve(b), b), 1e-10);
 }

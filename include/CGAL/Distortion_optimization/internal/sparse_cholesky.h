@@ -54,18 +54,26 @@ public:
     m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
   }
 
-  void analyzePattern(const Eigen::SparseMatrix<double>& A)
+  // `given_order`, if not empty, is the order of the blocks to eliminate them in, computed for
+  // another matrix on the same graph of blocks (see block_order()); else METIS's.
+  void analyze(const Eigen::SparseMatrix<double>& A, const std::vector<int>& given_order)
   {
     if(m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &m_cholmod);
     m_cholmodFactor = nullptr;
     const int blocks = static_cast<int>(A.rows()) / block;
-    // CHOLMOD reads its lower triangle; METIS ignores the diagonal.
-    const Eigen::SparseMatrix<double> graph = block_graph<block>(A);
-    cholmod_sparse G = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
-    std::vector<int> block_order(static_cast<std::size_t>(blocks)), order(static_cast<std::size_t>(A.rows()));
-    bool ok = blocks == 0 || cholmod_metis(&G, nullptr, 0, 1, block_order.data(), &m_cholmod);
+    bool ok = true;
+    if(given_order.size() == static_cast<std::size_t>(blocks)) {
+      block_order_ = given_order;
+    } else {
+      // CHOLMOD reads its lower triangle; METIS ignores the diagonal.
+      const Eigen::SparseMatrix<double> graph = block_graph<block>(A);
+      cholmod_sparse G = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
+      block_order_.assign(static_cast<std::size_t>(blocks), 0);
+      ok = blocks == 0 || cholmod_metis(&G, nullptr, 0, 1, block_order_.data(), &m_cholmod);
+    }
+    std::vector<int> order(static_cast<std::size_t>(A.rows()));
     for(int i = 0; i < blocks; ++i)
-      for(int a = 0; a < block; ++a) order[static_cast<std::size_t>(block * i + a)] = block * block_order[i] + a;
+      for(int a = 0; a < block; ++a) order[static_cast<std::size_t>(block * i + a)] = block * block_order_[i] + a;
     if(ok) {
       cholmod_sparse M = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
       m_cholmod.nmethods = 1;
@@ -77,7 +85,15 @@ public:
     m_info = ok ? Eigen::Success : Eigen::NumericalIssue;
     m_analysisIsOk = ok;
     m_factorizationIsOk = false;
+    if(!ok) block_order_.clear();
   }
+
+  void analyzePattern(const Eigen::SparseMatrix<double>& A) { analyze(A, {}); }
+
+  const std::vector<int>& block_order() const { return block_order_; }
+
+private:
+  std::vector<int> block_order_;
 };
 #endif
 
@@ -95,19 +111,25 @@ public:
 
   explicit Sparse_cholesky(int cholmod_from = default_cholmod_from) : cholmod_from_(cholmod_from) {}
 
-  // The symbolic analysis of A's pattern: once, before the first factorize (again if the pattern changes).
-  void analyze(const Eigen::SparseMatrix<double>& A)
+  // The symbolic analysis of A's pattern: once, before the first factorize (again if the pattern
+  // changes). `block_order`, if given, is the fill-reducing order of A's blocks that a solver
+  // computed for another matrix on the same graph of blocks (its block_order()), which a CHOLMOD
+  // factorization takes instead of computing METIS's again (the larger share of an analysis); on
+  // Eigen's path, whose ordering is cheap, it is not needed.
+  void analyze(const Eigen::SparseMatrix<double>& A, const std::vector<int>& block_order = {})
   {
+    factored_ = false;
     simplicial_.reset();
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
     supernodal_.reset();
     if(A.rows() >= cholmod_from_) {
       supernodal_ = std::make_unique<Supernodal>();
-      supernodal_->analyzePattern(A);
+      supernodal_->analyze(A, block_order);
       analyzed_ = supernodal_->info() == Eigen::Success;
       return;
     }
 #endif
+    (void)block_order;
     simplicial_ = std::make_unique<Simplicial>();
     simplicial_->analyzePattern(A);
     analyzed_ = simplicial_->info() == Eigen::Success;
@@ -143,7 +165,19 @@ public:
     return factored_ = simplicial_->info() == Eigen::Success && simplicial_->vectorD().minCoeff() > 0;
   }
 
+  bool is_analyzed() const { return analyzed_; }
   bool is_factored() const { return factored_; }
+
+  // The order in which CHOLMOD eliminates the blocks (block_order[k] is the k-th), for another
+  // analysis on the same graph of blocks; empty on Eigen's path.
+  const std::vector<int>& block_order() const
+  {
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    if(supernodal_) return supernodal_->block_order();
+#endif
+    static const std::vector<int> none;
+    return none;
+  }
 
   // (A + shift I)^-1 b, after a successful factorize.
   template <class Rhs>
