@@ -12,6 +12,9 @@
 #include "tool.h"
 
 #include <dlfcn.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <future>
 #include <iostream>
@@ -49,18 +52,25 @@ void check_threads(std::size_t n)
 
 // The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
 // them spin while they wait: beside other work, each factorization then took many times longer.
-// CHOLMOD's own OpenMP loops ask for a fixed number of threads, which only an inactive level of
-// parallelism overrides (the only OpenMP in the tool); on one thread their wake-ups cost a large
-// share of a run. The tool gives both its --threads, as it does TBB. Looked up at run time: a
-// build without CHOLMOD, or with another BLAS, has neither.
+// The tool gives it its --threads, as it does TBB (CHOLMOD's own OpenMP loops run on the calling
+// thread: openmp_regions.cpp). Looked up at run time: a build without CHOLMOD, or with another
+// BLAS, has no such function.
 void limit_solver_threads(std::size_t n)
 {
   using Setter = void (*)(int);
-  const auto call = [](const char* name, int value) {
-    if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, name))) set(value);
-  };
-  call("openblas_set_num_threads", static_cast<int>(n));
-  if(n == 1) call("omp_set_max_active_levels", 0);
+  if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(static_cast<int>(n));
+}
+
+// Each numeric factorization of CHOLMOD allocates and frees its workspaces (the permuted matrix,
+// the update matrices): glibc's malloc maps blocks that large afresh and unmaps them when freed,
+// so that every factorization paid a page fault per page it touched, half its time in the
+// solver's own benchmark. The tool keeps freed blocks in the heap for the next one instead.
+void keep_freed_memory()
+{
+#ifdef __GLIBC__
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
 }
 
 // All outputs or none: each output gets a temporary name beside it before any input is read (so a
@@ -85,6 +95,7 @@ int run(const Command_line& c)
     }
   check_threads(c.threads);
   limit_solver_threads(c.threads);
+  keep_freed_memory();
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   int status = 0;
   try {
