@@ -1717,6 +1717,29 @@ TEST(CommandLine, ASubdivisionThatCannotFitIsRefusedAtOnce)
   EXPECT_TRUE(exists(o));
 }
 
+// A surface whose Newton systems take the sparse solver's CHOLMOD path (66.6K unknowns: lion-head
+// subdivided once), with the tool's own allocator settings and OpenMP regions (main.cpp,
+// openmp_regions.cpp): Newton's few iterations, and an energy below the coarse mesh's optimum,
+// which the refined problem contains (a map of the coarse mesh is one of the fine mesh with the
+// same energy: --subdivide says so above).
+TEST(CommandLine, ASurfaceForTheSupernodalSolverConvergesAsNewtonDoes)
+{
+  const std::string coarse = temp("lion_coarse.obj"), fine_source = temp("lion_fine_source.off"),
+                    fine = temp("lion_fine.obj"), r1 = temp("lion_coarse.json"), r2 = temp("lion_fine.json");
+  Tool_run result = run("--source " + data("lion-head.off") + " --output " + coarse + " --measure symmetric_dirichlet --subdivide 1" +
+                        " --subdivided-source " + fine_source + " --report " + r1 + " --quiet");
+  ASSERT_EQ(result.status, 0) << result.output;
+  result = run("--source " + fine_source + " --output " + fine + " --measure symmetric_dirichlet --report " + r2 + " --quiet");
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string coarse_json = slurp(r1), fine_json = slurp(r2);
+  ASSERT_EQ(json_value(fine_json, "cells"), 4 * json_value(coarse_json, "cells"));
+  EXPECT_EQ(json_value(fine_json, "inverted_cells"), 0.);
+  EXPECT_LE(json_value(fine_json, "sweeps"), 15.);
+  const double coarse_energy = json_value(coarse_json, "final_energy");
+  EXPECT_LT(json_value(fine_json, "final_energy"), (1 - 1e-3) * coarse_energy);
+  EXPECT_GT(json_value(fine_json, "final_energy"), 0.99 * coarse_energy);
+}
+
 TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
 {
   const std::string s = temp("sub_source.off"), t = temp("sub_target.off"), o = temp("sub_out.off"),
