@@ -206,3 +206,24 @@ TEST(SparseCholesky, AnalysisTakesTheOrderOfAnotherOnTheSameGraph)
   EXPECT_GT(natural.factor_nonzeros(), 2 * own.factor_nonzeros());
   EXPECT_LT(relative_residual(newton, natural.solve(b), b), 1e-10);
 }
+
+// One solve (Tutte's maps) takes the minimum degree's order on CHOLMOD's path: another order than
+// nested dissection's, the same solution.
+TEST(SparseCholesky, MinimumDegreeOrderForOneSolve)
+{
+  const Sparse A = lion_head_system(1);
+  DOI::Sparse_cholesky<1> dissection(cholmod_always),
+    degree(cholmod_always, DOI::Fill_reducing_order::MINIMUM_DEGREE);
+  ASSERT_TRUE(dissection.factorize(A));
+  ASSERT_TRUE(degree.factorize(A));
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(A.rows(), 2);
+  EXPECT_LT(relative_residual(A, degree.solve(b), b), 1e-10);
+  EXPECT_LT((degree.solve(b) - dissection.solve(b)).norm(), 1e-9 * dissection.solve(b).norm());
+  if(degree.uses_cholmod()) {
+    std::vector<int> sorted = degree.block_order();
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_EQ(static_cast<Eigen::Index>(sorted.size()), A.rows());
+    for(std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], static_cast<int>(i));
+    EXPECT_NE(degree.block_order(), dissection.block_order());
+  }
+}

@@ -133,7 +133,7 @@ std::string usage()
   "               (the reweighted Laplacian; the other measures always take it)\n"
   "  --harmonic-start  on (default, except with --schedule local) or off: start from the\n"
   "               harmonic map of the fixed vertices where it is valid and better\n"
-  "  --threads    number of threads (default 1; the sparse solver's BLAS gets as many); the\n"
+  "  --threads    number of threads (default 1; the sparse solver's BLAS keeps one); the\n"
   "               output is the same for every run with the same number (and no\n"
   "               --time-limit, which stops by the clock)\n"
   "  --report     also write the results as JSON\n"

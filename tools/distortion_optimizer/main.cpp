@@ -51,14 +51,16 @@ void check_threads(std::size_t n)
 }
 
 // The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
-// them spin while they wait: beside other work, each factorization then took many times longer.
-// The tool gives it its --threads, as it does TBB (CHOLMOD's own OpenMP loops run on the calling
-// thread: openmp_regions.cpp). Looked up at run time: a build without CHOLMOD, or with another
-// BLAS, has no such function.
-void limit_solver_threads(std::size_t n)
+// them spin while they wait. A triangle mesh's supernodes are small (its separators are a few
+// thousand vertices at a million triangles): on two threads a factorization took as long as on
+// one, and the spinning threads took a core from the tool's own (TBB's) parallel steps. The tool
+// keeps the BLAS on one thread whatever --threads says (CHOLMOD's own OpenMP loops run on the
+// calling thread: openmp_regions.cpp). Looked up at run time: a build without CHOLMOD, or with
+// another BLAS, has no such function.
+void keep_blas_on_one_thread()
 {
   using Setter = void (*)(int);
-  if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(static_cast<int>(n));
+  if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
 }
 
 // Each numeric factorization of CHOLMOD allocates and frees its workspaces (the permuted matrix,
@@ -94,7 +96,7 @@ int run(const Command_line& c)
       staged.*outputs[i] = files[i]->path();
     }
   check_threads(c.threads);
-  limit_solver_threads(c.threads);
+  keep_blas_on_one_thread();
   keep_freed_memory();
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   int status = 0;

@@ -31,6 +31,12 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
+// How a factorization's fill-reducing order of the blocks is computed on CHOLMOD's path. METIS's
+// nested dissection takes several times as long as the approximate minimum degree (AMD) and fills
+// in less: it pays where one pattern is factored many times (Newton's steps), not for one solve
+// (Tutte's maps). Eigen's path always takes the minimum degree.
+enum class Fill_reducing_order { NESTED_DISSECTION, MINIMUM_DEGREE };
+
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
 // CHOLMOD's supernodal LL^T with a METIS nested-dissection ordering of the graph of the blocks (a
 // vertex's `block` unknowns kept together): the graph is block^2 times smaller than the matrix,
@@ -55,8 +61,9 @@ public:
   }
 
   // `given_order`, if not empty, is the order of the blocks to eliminate them in, computed for
-  // another matrix on the same graph of blocks (see block_order()); else METIS's.
-  void analyze(const Eigen::SparseMatrix<double>& A, const std::vector<int>& given_order)
+  // another matrix on the same graph of blocks (see block_order()); else `fill`'s.
+  void analyze(const Eigen::SparseMatrix<double>& A, const std::vector<int>& given_order,
+               Fill_reducing_order fill = Fill_reducing_order::NESTED_DISSECTION)
   {
     if(m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &m_cholmod);
     m_cholmodFactor = nullptr;
@@ -69,7 +76,9 @@ public:
       const Eigen::SparseMatrix<double> graph = block_graph<block>(A);
       cholmod_sparse G = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
       block_order_.assign(static_cast<std::size_t>(blocks), 0);
-      ok = blocks == 0 || cholmod_metis(&G, nullptr, 0, 1, block_order_.data(), &m_cholmod);
+      ok = blocks == 0 || (fill == Fill_reducing_order::NESTED_DISSECTION
+                             ? cholmod_metis(&G, nullptr, 0, 1, block_order_.data(), &m_cholmod)
+                             : cholmod_amd(&G, nullptr, 0, block_order_.data(), &m_cholmod));
     }
     std::vector<int> order(static_cast<std::size_t>(A.rows()));
     for(int i = 0; i < blocks; ++i)
@@ -109,7 +118,10 @@ class Sparse_cholesky
 public:
   static constexpr int default_cholmod_from = 65536;
 
-  explicit Sparse_cholesky(int cholmod_from = default_cholmod_from) : cholmod_from_(cholmod_from) {}
+  explicit Sparse_cholesky(int cholmod_from = default_cholmod_from,
+                           Fill_reducing_order fill = Fill_reducing_order::NESTED_DISSECTION)
+    : cholmod_from_(cholmod_from), fill_(fill)
+  {}
 
   // The symbolic analysis of A's pattern: once, before the first factorize (again if the pattern
   // changes). `block_order`, if given, is the fill-reducing order of A's blocks that a solver
@@ -124,7 +136,7 @@ public:
     supernodal_.reset();
     if(A.rows() >= cholmod_from_) {
       supernodal_ = std::make_unique<Supernodal>();
-      supernodal_->analyze(A, block_order);
+      supernodal_->analyze(A, block_order, fill_);
       analyzed_ = supernodal_->info() == Eigen::Success;
       return;
     }
@@ -203,6 +215,7 @@ public:
 private:
   using Simplicial = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_AMD_ordering<block>>;
   int cholmod_from_;
+  Fill_reducing_order fill_;
   std::unique_ptr<Simplicial> simplicial_;
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
   using Supernodal = Block_ordered_supernodal_llt<block>;
