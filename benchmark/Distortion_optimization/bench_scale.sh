@@ -12,6 +12,7 @@
 #   (default: levels 0 to 3, threads 1 2; run after scripts/test.sh)
 source "$(dirname "${BASH_SOURCE[0]}")/tool_common.sh"
 LEVELS=${1:-3}
+[[ $LEVELS =~ ^[0-9]+$ ]] || { echo "levels: a number of subdivisions (0 to 3 fit in 2 GB)" >&2; exit 2; }
 shift || true
 THREADS=("$@")
 [ ${#THREADS[@]} -gt 0 ] || THREADS=(1 2)
@@ -40,7 +41,7 @@ for border in fixed free; do
       cells=$(field "$report" cells)
       seconds=$(field "$report" seconds)
       sweeps=$(field "$report" sweeps)
-      per=$(awk -v s="$seconds" -v k="$sweeps" 'BEGIN { print s / k }')
+      per=$(awk -v s="$seconds" -v k="$sweeps" 'BEGIN { print k > 0 ? s / k : 0 }')
       printf '%-6s %-6s %9d %7.2f %9.2f %11.4f %6d %10s %13.8g %8.0f\n' "$border" "$threads" "$cells" "$wall" "$seconds" \
         "$per" "$sweeps" "" "$(field "$report" final_energy)" "$(awk -v k="$rss" 'BEGIN { print k / 1024 }')"
       fit[$border,$threads]+="$cells $per
@@ -52,6 +53,6 @@ done
 echo
 for key in "${!fit[@]}"; do
   printf 'exponent of seconds per iteration, border %s, %s thread(s): %s\n' "${key%,*}" "${key#*,}" \
-    "$(printf '%s' "${fit[$key]}" | awk 'NF == 2 { x = log($1); y = log($2); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
-      END { printf "%.2f", (n * sxy - sx * sy) / (n * sxx - sx * sx) }')"
+    "$(printf '%s' "${fit[$key]}" | awk 'NF == 2 && $2 > 0 { x = log($1); y = log($2); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
+      END { if(n < 2) print "n/a (one size)"; else printf "%.2f", (n * sxy - sx * sy) / (n * sxx - sx * sx) }')"
 done | sort

@@ -172,6 +172,7 @@ TEST(SparseCholesky, AnalysisTakesTheOrderOfAnotherOnTheSameGraph)
 {
   const Sparse laplacian = lion_head_system(1), newton = lion_head_system(2);
   DOI::Sparse_cholesky<1> harmonic(cholmod_always);
+  EXPECT_TRUE(harmonic.needs_analysis());
   harmonic.analyze(laplacian);
   ASSERT_TRUE(harmonic.factorize(laplacian));
   const std::vector<int>& order = harmonic.block_order();
@@ -184,14 +185,22 @@ TEST(SparseCholesky, AnalysisTakesTheOrderOfAnotherOnTheSameGraph)
   std::sort(sorted.begin(), sorted.end());
   for(std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], static_cast<int>(i));
 
-  DOI::Sparse_cholesky<2> own(cholmod_always), given(cholmod_always), wrong_length(cholmod_always);
+  // Orders that are not permutations of the vertices are not taken (METIS's is computed instead).
+  std::vector<int> repeated = order, out_of_range = order;
+  repeated[0] = repeated[1];
+  out_of_range[0] = static_cast<int>(order.size());
+  DOI::Sparse_cholesky<2> own(cholmod_always), given(cholmod_always), wrong_length(cholmod_always),
+    with_repeat(cholmod_always), with_out_of_range(cholmod_always);
   own.analyze(newton);
   given.analyze(newton, order);
   wrong_length.analyze(newton, std::vector<int>(order.begin(), order.end() - 1));
-  for(DOI::Sparse_cholesky<2>* cholesky : {&own, &given, &wrong_length}) ASSERT_TRUE(cholesky->factorize(newton));
-  EXPECT_EQ(given.block_order(), order);
-  EXPECT_EQ(own.block_order(), order);
-  EXPECT_EQ(wrong_length.block_order(), order);
+  with_repeat.analyze(newton, repeated);
+  with_out_of_range.analyze(newton, out_of_range);
+  for(DOI::Sparse_cholesky<2>* cholesky : {&own, &given, &wrong_length, &with_repeat, &with_out_of_range}) {
+    EXPECT_FALSE(cholesky->needs_analysis());
+    ASSERT_TRUE(cholesky->factorize(newton));
+    EXPECT_EQ(cholesky->block_order(), order);
+  }
   EXPECT_EQ(given.factor_nonzeros(), own.factor_nonzeros());
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(newton.rows(), 2, -1);
   EXPECT_LT(relative_residual(newton, given.solve(b), b), 1e-10);

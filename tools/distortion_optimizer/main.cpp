@@ -51,12 +51,11 @@ void check_threads(std::size_t n)
 }
 
 // The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
-// them spin while they wait. A triangle mesh's supernodes are small (its separators are a few
-// thousand vertices at a million triangles): on two threads a factorization took as long as on
-// one, and the spinning threads took a core from the tool's own (TBB's) parallel steps. The tool
-// keeps the BLAS on one thread whatever --threads says (CHOLMOD's own OpenMP loops run on the
-// calling thread: openmp_regions.cpp). Looked up at run time: a build without CHOLMOD, or with
-// another BLAS, has no such function.
+// them spin while they wait. A triangle mesh's supernodes are small: more threads did not make its
+// factorizations faster, and the spinning threads took a core from the tool's own (TBB's)
+// parallel steps. The tool keeps the BLAS on one thread whatever --threads says (CHOLMOD's own
+// OpenMP loops run on the calling thread: openmp_regions.cpp). Looked up at run time: a build
+// without CHOLMOD, or with another BLAS, has no such function.
 void keep_blas_on_one_thread()
 {
   using Setter = void (*)(int);
@@ -65,8 +64,8 @@ void keep_blas_on_one_thread()
 
 // Each numeric factorization of CHOLMOD allocates and frees its workspaces (the permuted matrix,
 // the update matrices): glibc's malloc maps blocks that large afresh and unmaps them when freed,
-// so that every factorization paid a page fault per page it touched, half its time in the
-// solver's own benchmark. The tool keeps freed blocks in the heap for the next one instead.
+// so that every factorization paid a page fault per page it touched. The tool keeps freed blocks
+// in the heap for the next one instead (figures: the manual's section on the sparse solver).
 void keep_freed_memory()
 {
 #ifdef __GLIBC__

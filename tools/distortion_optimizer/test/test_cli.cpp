@@ -1740,6 +1740,19 @@ TEST(CommandLine, ASurfaceForTheSupernodalSolverConvergesAsNewtonDoes)
   EXPECT_GT(json_value(fine_json, "final_energy"), 0.99 * coarse_energy);
 }
 
+// CHOLMOD's OpenMP regions bind to the tool's own GOMP_parallel (openmp_regions.cpp), which the
+// executable must define and export for the dynamic linker to prefer it to libgomp's.
+TEST(CommandLine, TheToolRunsCholmodsOpenMPRegionsItself)
+{
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+  const Tool_run symbols = run_in_shell("nm -D --defined-only " + std::string(DISTORTION_OPTIMIZER));
+  ASSERT_EQ(symbols.status, 0) << symbols.output;
+  EXPECT_TRUE(std::regex_search(symbols.output, std::regex(" T GOMP_parallel\\b"))) << symbols.output.substr(0, 2000);
+#else
+  GTEST_SKIP() << "built without CHOLMOD";
+#endif
+}
+
 TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
 {
   const std::string s = temp("sub_source.off"), t = temp("sub_target.off"), o = temp("sub_out.off"),

@@ -376,7 +376,7 @@ private:
       // A shift of 1e-10 of the mean diagonal keeps H definite where whole modes were dropped or
       // nothing is fixed (translations). The pattern is analyzed at the first factorization only,
       // in the harmonic start's order of the vertices if it has one.
-      if(!factorization_.is_analyzed()) factorization_.analyze(H, system_.vertex_order());
+      if(factorization_.needs_analysis()) factorization_.analyze(H, system_.fill_order());
       if(!factorization_.factorize(H, 1e-10 * H.diagonal().mean())) {
         solution.setConstant(std::numeric_limits<double>::quiet_NaN());
         return;

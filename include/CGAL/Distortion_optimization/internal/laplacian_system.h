@@ -85,8 +85,9 @@ public:
   // The cells with a free vertex, in increasing order: the only ones a move of the free vertices changes.
   const std::vector<std::uint32_t>& moving_cells() const { return moving_cells_; }
   // The fill-reducing order of the unknown vertices that the harmonic map's factorization took,
-  // for the factorizations of H (same graph of vertices); empty before, or where none was needed.
-  const std::vector<int>& vertex_order() const { return vertex_order_; }
+  // for the factorizations of H (same graph of vertices); empty before, and where Eigen's
+  // factorization (which computes its own cheaply) solved it.
+  const std::vector<int>& fill_order() const { return fill_order_; }
 
   // Refills P with the cell stiffnesses w(c) f(c) G^T G and, if asked, accumulates the weighted
   // vertex gradients w(c) dE_c/dx of the free vertices into the rows of g, or the fixed vertices'
@@ -291,9 +292,9 @@ public:
       // A planar Laplacian fills in little: a sparse LDL^T is several times faster than the
       // conjugate gradients below.
       Sparse_cholesky<1> factorization;
-      factorization.analyze(P_, vertex_order_);
+      factorization.analyze(P_, fill_order_);
       if(!factorization.factorize(P_)) return false;
-      vertex_order_ = factorization.block_order();
+      fill_order_ = factorization.block_order();
       X = factorization.solve(rhs);
     } else {
       for(std::size_t v = 0; v < x.size(); ++v)
@@ -528,7 +529,7 @@ private:
   std::vector<Block_incidences> blocks_, hessian_blocks_;
   Eigen::SparseMatrix<double> P_, H_;
   std::vector<int> slots_;
-  std::vector<int> vertex_order_;
+  std::vector<int> fill_order_;
 };
 
 } // namespace internal

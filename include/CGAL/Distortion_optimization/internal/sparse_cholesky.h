@@ -38,10 +38,11 @@ namespace internal {
 enum class Fill_reducing_order { NESTED_DISSECTION, MINIMUM_DEGREE };
 
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
-// CHOLMOD's supernodal LL^T with a METIS nested-dissection ordering of the graph of the blocks (a
-// vertex's `block` unknowns kept together): the graph is block^2 times smaller than the matrix,
-// and METIS's ordering, whose cost the analysis is, takes a fraction of the time it takes on the
-// matrix, for a factor as sparse. Eigen's CholmodSupernodalLLT but for the analysis.
+// CHOLMOD's supernodal LL^T with a fill-reducing order of the graph of the blocks (a vertex's
+// `block` unknowns kept together): METIS's nested dissection or CHOLMOD's AMD, or an order given
+// by an earlier analysis. The graph is block^2 times smaller than the matrix, and an ordering,
+// whose cost the analysis is, takes a fraction of the time it takes on the matrix, for a factor as
+// sparse. Eigen's CholmodSupernodalLLT but for the analysis.
 template <int block>
 class Block_ordered_supernodal_llt
   : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Block_ordered_supernodal_llt<block>>
@@ -69,7 +70,7 @@ public:
     m_cholmodFactor = nullptr;
     const int blocks = static_cast<int>(A.rows()) / block;
     bool ok = true;
-    if(given_order.size() == static_cast<std::size_t>(blocks)) {
+    if(is_permutation(given_order, blocks)) {
       block_order_ = given_order;
     } else {
       // CHOLMOD reads its lower triangle; METIS ignores the diagonal.
@@ -102,6 +103,19 @@ public:
   const std::vector<int>& block_order() const { return block_order_; }
 
 private:
+  // Whether `order` holds each of 0 .. size - 1 once (an order from another analysis, checked
+  // rather than trusted: CHOLMOD would read out of bounds).
+  static bool is_permutation(const std::vector<int>& order, int size)
+  {
+    if(order.size() != static_cast<std::size_t>(size)) return false;
+    std::vector<unsigned char> seen(order.size(), 0);
+    for(int k : order) {
+      if(k < 0 || k >= size || seen[static_cast<std::size_t>(k)]) return false;
+      seen[static_cast<std::size_t>(k)] = 1;
+    }
+    return true;
+  }
+
   std::vector<int> block_order_;
 };
 #endif
@@ -163,7 +177,7 @@ public:
   bool factorize(const Eigen::SparseMatrix<double>& A, double shift = 0)
   {
     if(A.rows() == 0) return factored_ = true;
-    if(!simplicial_ && !uses_cholmod()) analyze(A);
+    if(needs_analysis()) analyze(A);
     if(!analyzed_) return factored_ = false;
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
     if(supernodal_) {
@@ -177,7 +191,14 @@ public:
     return factored_ = simplicial_->info() == Eigen::Success && simplicial_->vectorD().minCoeff() > 0;
   }
 
-  bool is_analyzed() const { return analyzed_; }
+  // Whether no analysis was made yet (successful or not): factorize() would make one.
+  bool needs_analysis() const
+  {
+#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
+    if(supernodal_) return false;
+#endif
+    return !simplicial_;
+  }
   bool is_factored() const { return factored_; }
 
   // The order in which CHOLMOD eliminates the blocks (block_order[k] is the k-th), for another
