@@ -192,13 +192,7 @@ public:
   }
 
   // Whether no analysis was made yet (successful or not): factorize() would make one.
-  bool needs_analysis() const
-  {
-#ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
-    if(supernodal_) return false;
-#endif
-    return !simplicial_;
-  }
+  bool needs_analysis() const { return !simplicial_ && !uses_cholmod(); }
   bool is_factored() const { return factored_; }
 
   // The order in which CHOLMOD eliminates the blocks (block_order[k] is the k-th), for another
