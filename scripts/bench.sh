@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/install_dependencies.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_BENCHMARKS=ON
+bash scripts/configure.sh build -DBUILD_BENCHMARKS=ON
 if [ $# -eq 0 ]; then
   cmake --build build -j2
   exit 0

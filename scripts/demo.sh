@@ -16,7 +16,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD=${DEMO_BUILD_DIR:-build}
 if [ "${1:-}" != "--no-build" ]; then
   bash scripts/install_dependencies.sh
-  cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DBUILD_EXAMPLES=ON
+  bash scripts/configure.sh "$BUILD" -DBUILD_EXAMPLES=ON
   cmake --build "$BUILD" --target distortion_optimizer untangle_parameterization -j2
 fi
 BIN=$BUILD/bin

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake ccache
+  build-essential cmake ninja-build ccache
   libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
   libtet1.5-dev libgtest-dev libbenchmark-dev
   libsuitesparse-dev libmetis-dev libopenblas-dev  # CHOLMOD, its METIS ordering and BLAS: triangle maps' Newton systems

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/install_dependencies.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release \
+bash scripts/configure.sh build \
   -DBUILD_TESTING=ON -DBUILD_EXAMPLES=ON -DBUILD_BENCHMARKS=OFF
 cmake --build build -j2
 # The manual and reference (Doxygen, into build/doc/html): a warning is an error (Doxyfile).

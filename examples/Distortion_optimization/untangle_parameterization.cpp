@@ -1,19 +1,20 @@
 // Repair, then improve, CGAL's own parameterization.
 //
-// CGAL's ARAP_parameterizer_3 returns OK with flipped triangles on real disks (lion-head: about
-// 330). This example counts them, then calls CGAL::minimize_distortion() with untangle_first: the
-// map is first made injective (Distortion_optimization::untangle(), no triangle inverted, the free
-// border kept from crossing itself), then its symmetric Dirichlet energy is minimized. It writes
-// the surface with both parameterizations as UVs (OBJ: v, vt, f v/vt) and pictures of both maps,
-// each triangle coloured by its distortion (the flipped ones in red).
+// CGAL's ARAP_parameterizer_3 can return OK with flipped triangles. This example counts them, then
+// calls CGAL::minimize_distortion() with untangle_first: the map is first made injective (no
+// triangle inverted, the free border kept from crossing itself), then its distortion is minimized.
+// It writes the surface with both parameterizations as UVs (OBJ: v, vt, f v/vt) and pictures of
+// both maps, each triangle coloured by its distortion (the flipped ones in red).
 //
-//   untangle_parameterization [mesh.off [output_prefix]]
+//   untangle_parameterization [mesh.off [output_prefix [measure]]]
 //
 // writes output_prefix_arap.obj, _arap.svg, _optimized.obj, _optimized.svg (default prefix: the
-// mesh's name in the current folder).
+// mesh's name). The measure is any name distortion_optimizer's --measure takes (default
+// symmetric_dirichlet), held by an Any_measure: the library compiles its optimizer once.
 
 #include <CGAL/Distortion_optimization/IO/svg.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+#include <CGAL/Distortion_optimization/measure_by_name.h>
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
@@ -42,6 +43,13 @@ int main(int argc, char** argv)
   const std::string path = argc > 1 ? argv[1] : DISTORTION_OPTIMIZATION_DATA_DIR "/lion-head.off";
   std::string prefix = argc > 2 ? argv[2] : path.substr(path.find_last_of('/') + 1);
   if(argc <= 2) prefix = prefix.substr(0, prefix.find_last_of('.'));
+  DO::Any_measure measure = DO::Symmetric_dirichlet();
+  try {
+    if(argc > 3) measure = DO::measure_from_name(argv[3]);
+  } catch(const DO::Invalid_input& e) {
+    std::cerr << e.what() << "\n";
+    return EXIT_FAILURE;
+  }
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(path, mesh) || !CGAL::is_triangle_mesh(mesh)) {
     std::cerr << path << ": not a triangle mesh\n";
@@ -57,7 +65,6 @@ int main(int argc, char** argv)
 
   // The surface with its UVs (OBJ), and a picture of the map, each triangle coloured by its distortion.
   auto per_face = mesh.add_property_map<Mesh::Face_index, double>("f:distortion").first;
-  const DO::Symmetric_dirichlet measure;
   const auto write = [&](const std::string& name) {
     const DO::Distortion_statistics s = CGAL::compute_distortion(mesh, uv, measure, DO::parameters::cell_distortion_map(per_face));
     DO::IO::Triangle_soup soup;
