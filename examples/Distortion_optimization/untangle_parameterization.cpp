@@ -1,11 +1,12 @@
 // Repair, then improve, CGAL's own parameterization.
 //
-// CGAL's ARAP_parameterizer_3 returns OK with flipped triangles on real disks (lion-head: about
-// 330). This example counts them, then calls CGAL::minimize_distortion() with untangle_first: the
-// map is first made injective (Distortion_optimization::untangle(), no triangle inverted, the free
-// border kept from crossing itself), then its symmetric Dirichlet energy is minimized. It writes
-// the surface with both parameterizations as UVs (OBJ: v, vt, f v/vt) and pictures of both maps,
-// each triangle coloured by its distortion (the flipped ones in red).
+// CGAL's ARAP_parameterizer_3 can return OK with flipped triangles on real disks (the manual shows
+// lion-head's). This example counts them, then calls CGAL::minimize_distortion() with
+// untangle_first: the map is first made injective (Distortion_optimization::untangle(), no
+// triangle inverted, the free border kept from crossing itself), then its symmetric Dirichlet
+// energy is minimized. It writes the surface with both parameterizations as UVs (OBJ: v, vt,
+// f v/vt) and pictures of both maps, each triangle coloured by its distortion (the flipped ones in
+// red).
 //
 //   untangle_parameterization [mesh.off [output_prefix]]
 //
