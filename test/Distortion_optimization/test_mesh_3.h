@@ -34,7 +34,7 @@ using Target_storage = std::unordered_map<Vertex_handle, Point_3>;
 using Target_map = boost::associative_property_map<Target_storage>;
 
 // A Mesh_3 mesh of {f < 0} inside the ball of the given radius, at the given size (no perturbation
-// or exudation): compiled once, in mesh_implicit.cpp (make_mesh_3 takes minutes).
+// or exudation): compiled once, in mesh_implicit.cpp (make_mesh_3 is slow to compile).
 C3t3 mesh_implicit(double (*f)(const Point_3&), double radius, double size);
 
 // Complexes of another domain type: Mesh_3 on the polyhedral domain bounded by a closed surface

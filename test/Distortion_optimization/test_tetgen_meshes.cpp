@@ -338,8 +338,8 @@ TEST(TetrahedralMeshes, TangledCubeWithAFixedBoundaryIsUntangledThenOptimized)
 }
 
 // A cell whose orientation is right by the exact predicate but whose floating-point det J is not
-// positive: a normalized measure is infinite there, so untangling must not count it as done (it
-// used to, and minimize_distortion(untangle_first) then threw on the map untangle returned).
+// positive: a normalized measure is infinite there, so untangling must not count it as done (else
+// minimize_distortion(untangle_first) would throw on the map untangle returns).
 TEST(TetrahedralMeshes, ACellValidOnlyByAHairIsUntangledToo)
 {
   const C3t3 c3t3 = tetgen_cube_complex(0.01);

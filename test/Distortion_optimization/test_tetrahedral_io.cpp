@@ -1040,7 +1040,7 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   EXPECT_EQ(message("trailing.ply", header + points + "3 0 1 2\n\nthis is garbage\n"),
             ":16: content after the 5 elements the header announces");
   EXPECT_EQ(message("blank.ply", header + points + "3 0 1 2\n\n  \n"), "no error");
-  // Headers that crashed CGAL's reader (hostile round 3), and one without x that it read as flat.
+  // Headers that crash CGAL's reader, and one without x that it reads as flat.
   EXPECT_EQ(message("property_only.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),
             ":3: a property declared before any element");
   EXPECT_EQ(message("before_element.ply", "ply\nformat ascii 1.0\nproperty float x\n" + header.substr(header.find("element")) +
@@ -1071,8 +1071,8 @@ TEST(Readers, PlyAndStlThroughCGALAreCheckedAsStrictly)
   std::string no_x = header;
   no_x.erase(no_x.find("property float x\n"), 17);
   EXPECT_EQ(message("no_x.ply", no_x + "0 0\n0 0\n1 0\n1 0\n3 0 1 2\n"), ": the vertices have no property x");
-  // List counts longer than the file, which CGAL's reader made room for (13 GB from 200 bytes), or
-  // negative (hostile round 3); a coordinate too large for the computations.
+  // List counts longer than the file, which CGAL's reader makes room for (gigabytes from a small
+  // file), or negative; a coordinate too large for the computations.
   std::string uint_count = header;
   uint_count.replace(uint_count.find("list uchar int"), 14, "list uint int");
   EXPECT_EQ(message("huge_count.ply", uint_count + points + "4294967280 0 1 2\n"),

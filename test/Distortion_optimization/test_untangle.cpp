@@ -254,7 +254,7 @@ TEST(Untangle, ADiskWhoseRoundsEndTangledStartsAgainFromItsTutteEmbedding)
 }
 
 // A border fixed on a convex polygon whose inside the rounds do not untangle (one inner vertex of
-// lion-head's Tutte map moved far outside the disk: they ended with 8 cells inverted) is untangled
+// lion-head's Tutte map moved far outside the disk) is untangled
 // from Tutte's embedding with the border where it is, on the circle and on a square.
 TEST(Untangle, ABorderFixedOnAConvexPolygonIsUntangledFromTutteEmbeddingThere)
 {

@@ -339,7 +339,7 @@ TEST(VolumeWorkflow, ExactScalingsGiveTheScaledComplex)
 {
   // Mesh_3 runs on a copy scaled to unit size, so a surface scaled by 2^k gives the complex of the
   // unscaled one scaled by 2^k, bit for bit: points and weights, with the default sizes and with
-  // given ones. Run on Mesh_3 directly, ellipsoid.off crashed at 2^-60 and did not finish at 2^-40.
+  // given ones. Mesh_3 run directly on a surface at a tiny scale crashes or does not finish.
   // The cube's sharp edges bring weighted points (the protecting balls).
   DEMO_SURFACE(ellipsoid, "ellipsoid.off");
   // The points and weights of the cells in the complex, in its order, divided by `factor`.
@@ -491,7 +491,7 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   expect_invalid([&] { DO::mesh_interior(good, DOP::sharp_edge_angle(0.)); }, "sharp edge angle");
   expect_invalid([&] { DO::mesh_interior(good, DOP::odt_iterations(-1)); }, "ODT and Lloyd");
   // Sizes that ask for more vertices than allowed (given, or 2 million) are refused before Mesh_3
-  // runs: 9 million (about 40 GB with the tool's maps) were once accepted.
+  // runs, rather than when the memory runs out (a few kilobytes a vertex).
   expect_invalid([&] { DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100))); },
                  "more than maximum_number_of_vertices");
   expect_invalid([&] { DO::mesh_interior(good, DOP::cell_size(1e-4)); }, "vertices, more than 2 million (cell size 0.0001");
@@ -507,9 +507,9 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   for(auto v : flat.vertices()) flat.point(v) = Point(flat.point(v).x(), flat.point(v).y(), 1e-9 * flat.point(v).z());
   expect_invalid([&] { DO::mesh_interior(flat); }, "the volume is thinner (2 volume / area = 1");
   expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9)); }, "more than 2 million");
-  // A plate 0.02 thick: at the default sizes (facet size 0.058) Mesh_3's tetrahedra touched across
-  // it (after minutes, for thinner plates); it is refused at once, and meshed below twice its
-  // thickness, as the message says.
+  // A plate 0.02 thick: at the default sizes (facet size 0.058) Mesh_3's tetrahedra would touch
+  // across it (after a long refinement, for thinner plates); it is refused at once, and meshed
+  // below twice its thickness, as the message says.
   Surface plate;
   CGAL::make_hexahedron(Point(-1, -1, -0.01), Point(1, -1, -0.01), Point(1, 1, -0.01), Point(-1, 1, -0.01),
                         Point(-1, 1, 0.01), Point(-1, -1, 0.01), Point(1, -1, 0.01), Point(1, 1, 0.01), plate);
@@ -582,12 +582,11 @@ TEST(VolumeWorkflow, EveryComponentIsMeshed)
   expect_invalid([&] { DO::mesh_interior(pair); }, "faces 0 and 12 of two components of the surface are 0.001 apart, less than the facet distance");
 }
 
-// Mesh_3 left on blobby.off (default sizes) a flat cap: a cell with two boundary facets and its
-// four vertices on the surface, with a smallest dihedral angle of 0.08 degrees, which the radial
-// map turned over; with the boundary fixed, no optimization could undo it (the tool refused
-// --start radial on blobby, elephant, fandisk, eight and hand). Such caps are peeled: the cells
-// with all their vertices on the surface keep their orientation under the radial map, and the
-// boundary is still a 2-manifold on the surface.
+// Mesh_3 leaves flat caps on blobby.off (default sizes): cells with two boundary facets and their
+// four vertices on the surface, which the radial map can turn over; with the boundary fixed, no
+// optimization could undo that. Such caps are peeled: the cells with all their vertices on the
+// surface keep their orientation under the radial map, and the boundary is still a 2-manifold on
+// the surface.
 TEST(VolumeWorkflow, FlatCapsArePeeledSoThatTheRadialMapKeepsTheBoundaryCells)
 {
   DEMO_SURFACE(blobby, "blobby.off");
@@ -713,10 +712,10 @@ TEST(VolumeWorkflow, FlatCellsAreFlippedAway)
   EXPECT_GT(c3t3.number_of_cells_in_complex(), 10000u);
 }
 
-// Sizes larger than the surface mesh it coarsely (the default vertex cap, 10 times what the sizes
-// ask for, once stopped Mesh_3 at 13 vertices); a surface far from the origin for its size is
-// meshed too (its copy moved near the origin: a unit sphere at 10^12 hung Mesh_3), its complex
-// moved back with every cell positive, around the surface.
+// Sizes larger than the surface mesh it coarsely (the default vertex cap is at least 10^4: a cap
+// of 10 times what such sizes ask for would stop Mesh_3 after a few vertices); a surface far from
+// the origin for its size is meshed too (its copy moved near the origin: Mesh_3 can hang on the
+// surface where it is), its complex moved back with every cell positive, around the surface.
 TEST(VolumeWorkflow, LargeSizesAndSurfacesFarFromTheOriginAreMeshed)
 {
   const Surface good = icosahedron(1);
@@ -829,8 +828,8 @@ TEST(VolumeWorkflow, StartMapsAreTheSameAtAnyScale)
 
 // The ball map untangled with its boundary sliding, for the source scaled by 2^a and the ball (and
 // its sphere) by 2^b: the untangling's barrier relates determinants to a typical one and lengths
-// to a typical edge through cube roots, which libm's cbrt and pow took with other last digits
-// for other sizes. Now the same map, scaled, bit for bit.
+// to a typical edge through cube roots, computed so that a power-of-two scale changes no last
+// digit (libm's cbrt and pow do not promise that): the same map, scaled, bit for bit.
 TEST(VolumeWorkflow, UntangledBallMapIsTheSameAtAnyScale)
 {
   const Surface cube = triangulated_cube();   // its ball map flattens cells across its edges
@@ -871,10 +870,10 @@ TEST(VolumeWorkflow, UntanglingLoosensABarrierThatWallsATangleIn)
   EXPECT_GT(on_the_unit_sphere(c3t3, ball), 1000u);
 }
 
-// A fold of the sliding boundary closed to within rounding stalled every global step: under the
-// radial map of CGAL's helmet.off, its boundary sliding on its own surface, K stopped at 1.2848
-// (42 iterations) after global steps of lengths down to 1e-13, every trial crossing at the fold
-// however short. The fold's vertices held back, the rest of the map goes on: 1.2685 (44).
+// A fold of the sliding boundary closed to within rounding would stall every global step, every
+// trial crossing at the fold however short (under the radial map of CGAL's helmet.off, its
+// boundary sliding on its own surface, K would stop above the bound this test sets). The fold's
+// vertices held back, the rest of the map goes on.
 TEST(VolumeWorkflow, AFoldOfTheSlidingBoundaryHoldsBackOnlyItsOwnVertices)
 {
   DEMO_SURFACE(helmet, "helmet.off");

@@ -91,8 +91,8 @@ double memory_available()
 }
 
 // A subdivision whose result cannot fit in memory is refused before the run rather than when
-// the memory runs out: about 340 bytes per triangle of the result, measured at levels 3 and 4
-// on mushroom (4,608 triangles: 97 and 386 MB at their peak).
+// the memory runs out: a run's peak is about 340 bytes per triangle of the result (the figure
+// the manual gives under the tool's limits).
 void check_subdivision_fits(const Command_line& c, std::size_t cells)
 {
   const double triangles = double(cells) * std::pow(4., double(c.subdivide)), needed = 340 * triangles;

@@ -249,13 +249,11 @@ and than a tenth of their width (smallest dihedral angles of 0.1 to 1.5 degrees)
 volume and which a start map that bends the surface (the radial map, the unit ball map) can turn
 over with every vertex on the boundary, where no optimization with a fixed boundary can undo it.
 They are removed from the complex, their two inner facets becoming boundary facets, less than the
-facet distance deeper (blobby.off: 35 of 2.7.10^4 cells). Inside, Mesh_3 leaves a few cells as
-flat with all four vertices on the surface across thin parts (spool.off: one, with a dihedral
-angle of 0.04 degrees, which the radial map turned over): without `exude_slivers`, Mesh_3's
-sliver exudation still runs on the cells with a dihedral angle below 2 degrees (a few
-milliseconds). Where four of Mesh_3's points are coplanar
-and cospherical, a cell can be flat to rounding (the square sections of a 40 x 0.1 x 0.1 bar: 15
-of 1.5.10^4 cells), which no map can measure: it is flipped away (a 3-2 flip of an edge, after a
+facet distance deeper. Inside, Mesh_3 leaves a few cells as flat with all four vertices on the
+surface across thin parts, which the radial map can turn over: without `exude_slivers`, Mesh_3's
+sliver exudation still runs on the cells with a dihedral angle below 2 degrees. Where four of
+Mesh_3's points are coplanar and cospherical, a cell can be flat to rounding (the square sections
+of a long thin bar), which no map can measure: it is flipped away (a 3-2 flip of an edge, after a
 2-3 flip where the edge has four cells around it), among cells of the complex: the triangulation
 stays valid with positive cells but is no longer the regular one. Two runs with the same input
 give the same complex (the random generator of Mesh_3 is seeded, the optimizers have no time
@@ -268,8 +266,8 @@ sharp_edge_angle = 60. This aims at about 3.10^4 tetrahedra (the volume term) wi
 about 8.10^3 boundary facets (the area term, for thin shapes). On the 66 closed, 2-manifold,
 self-intersection-free surfaces of libcgal-demo's data it gave 1.4.10^4 to 1.03.10^5
 tetrahedra (median 2.7.10^4); the largest counts come
-from spurious sharp edges of scanned surfaces (femur.off: 1135 corners; 2.8.10^4 tetrahedra
-with `sharp_edge_angle(180)`), and one CAD model with sharp edges 10^-4 of its size
+from spurious sharp edges of scanned surfaces (femur.off, which `sharp_edge_angle(180)` brings
+near the median), and one CAD model with sharp edges 10^-4 of its size
 (mpi_triang.off) stops at `maximum_number_of_vertices`. Where parts of the surface are closer
 than the sizes, Mesh_3's tetrahedra may touch only along an edge or at a vertex (nine of those
 surfaces at the default sizes: armadillo, cheese, dino, femur, hand, homer, rotor, rotor_small,

@@ -219,8 +219,8 @@ TEST(CommandLine, OptimizesAPlanarPairAndReportsJson)
 }
 
 // A grid at half its size that grows back, border free, towards a small triangle beside it (a
-// piece of its own): the tool keeps the triangle outside (hostile round 8: it ended inside a grid
-// face). A start with the triangle already inside is optimized without the guard, with a warning.
+// piece of its own): the tool keeps the triangle outside, not inside a grid face. A start with
+// the triangle already inside is optimized without the guard, with a warning.
 TEST(CommandLine, FreeBoundaryModeKeepsPiecesApart)
 {
   const auto write_pair = [](const std::string& source, const std::string& target, double x, double y) {
@@ -357,8 +357,9 @@ TEST(CommandLine, UntangleThenOptimize)
   }
 }
 
-// A mirror image with nothing fixed is reflected at once (hostile round 3: 84 s and a thousand
-// rounds for this 30 x 30 grid, 1,800 triangles, all inverted); the result keeps no cell inverted.
+// A mirror image with nothing fixed is reflected at once rather than untangled round by round
+// (every one of this 30 x 30 grid's 1,800 triangles is inverted); the result keeps no cell
+// inverted.
 TEST(CommandLine, AMirrorImageWithAFreeBorderIsReflectedAtOnce)
 {
   const std::string s = temp("grid30.off"), t = temp("grid30_mirror.off"), o = temp("grid30_out.off"), r = temp("grid30.json");
@@ -1150,7 +1151,7 @@ void write_cube(const std::string& path)
 }
 
 // The icosahedron's faces split in four `levels` times, on the unit sphere, with y scaled by
-// `squash` (0.01: the knife-edged disc of hostile round 3, whose sharp rim Mesh_3 protects for minutes).
+// `squash` (0.01 makes a knife-edged disc, whose sharp rim Mesh_3 takes long to protect).
 void write_icosphere(const std::string& path, int levels, double squash)
 {
   const double g = (1 + std::sqrt(5.)) / 2;
@@ -1335,8 +1336,8 @@ TEST(CommandLine, ARunKilledWhileItComputesLeavesNoFile)
   }
 }
 
-// --time-limit covers the meshing too (issue 66): Mesh_3 stops at the limit (it would take minutes
-// at this size), and the run fails with nothing written.
+// --time-limit covers the meshing too (issue 66): Mesh_3 stops at the limit (it would run far
+// past it at this size), and the run fails with nothing written.
 TEST(CommandLine, TheTimeLimitStopsTheMeshing)
 {
   const std::string cube = temp("cube_limit.off"), o = temp("limit.mesh");
@@ -1344,8 +1345,8 @@ TEST(CommandLine, TheTimeLimitStopsTheMeshing)
   std::remove(o.c_str());
   expect_failed_cleanly(run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o),
                         "Mesh_3 did not finish within the time limit of 0.5 s", o);
-  // Where Mesh_3 runs long steps that check no limit (the protection of a knife-edged rim ran on
-  // for minutes past it), the tool ends the run a moment after the limit.
+  // Where Mesh_3 runs long steps that check no limit (the protection of a knife-edged rim), the
+  // tool ends the run a moment after the limit.
   const std::string disc = temp("flat_disc.off");
   write_icosphere(disc, 2, 0.01);
   expect_failed_cleanly(run("--source " + disc + " --start radial --cell-size 0.026 --time-limit 1 --output " + o),
@@ -1461,10 +1462,9 @@ TEST(CommandLine, VolumeModeTakesASurfaceFarFromTheOrigin)
     for(double x : p) EXPECT_NEAR(x, 1e9, 1.000001);
 }
 
-// An elongated volume, an 8 x 2 x 2 box, onto the ball: its ball map squeezed it across its length
-// onto narrow cones about its axis, and untangling with the boundary sliding failed ("3 inverted or
-// flat cells remain after 58 rounds"), and for a 40 x 2 x 2 box after 3 minutes. The ball map
-// whitens the volume now (volume_maps.h).
+// An elongated volume, an 8 x 2 x 2 box, onto the ball: a ball map that squeezes it across its
+// length onto narrow cones about its axis leaves cells that untangling with the boundary sliding
+// cannot repair. The ball map whitens the volume first (volume_maps.h).
 TEST(CommandLine, VolumeModeMapsAnElongatedBoxOntoTheBall)
 {
   const std::string box = temp("long_box.off"), o = temp("long_box.mesh");
@@ -1699,8 +1699,8 @@ TEST(CommandLine, ReferenceIdealImprovesTheSourceMesh)
 
 // --subdivide (issue 16.3): the optimized map and its source refined together; linear keeps the energy.
 // A subdivision that cannot fit in the memory this run may take is refused before the run
-// (issue 66): under a 1 GB address space, five levels of mushroom (4.7 million triangles, about
-// 1.6 GB) are; three levels (74K) are not.
+// (issue 66): under a 1 GB address space, five levels of mushroom (4.7 million triangles) are;
+// three levels are not.
 TEST(CommandLine, ASubdivisionThatCannotFitIsRefusedAtOnce)
 {
   const std::string o = temp("mushroom_sub.obj"), s2 = temp("mushroom_sub_source.off");
@@ -1717,11 +1717,11 @@ TEST(CommandLine, ASubdivisionThatCannotFitIsRefusedAtOnce)
   EXPECT_TRUE(exists(o));
 }
 
-// A surface whose Newton systems take the sparse solver's CHOLMOD path (66.6K unknowns: lion-head
-// subdivided once), with the tool's own allocator settings and OpenMP regions (main.cpp,
-// openmp_regions.cpp): Newton's few iterations, and an energy below the coarse mesh's optimum,
-// which the refined problem contains (a map of the coarse mesh is one of the fine mesh with the
-// same energy: --subdivide says so above).
+// A surface whose Newton systems take the sparse solver's CHOLMOD path (lion-head subdivided once:
+// more unknowns than Sparse_cholesky's default_cholmod_from), with the tool's own allocator
+// settings and OpenMP regions (main.cpp, openmp_regions.cpp): Newton's few iterations, and an
+// energy below the coarse mesh's optimum, which the refined problem contains (a map of the coarse
+// mesh is one of the fine mesh with the same energy: --subdivide says so above).
 TEST(CommandLine, ASurfaceForTheSupernodalSolverConvergesAsNewtonDoes)
 {
   const std::string coarse = temp("lion_coarse.obj"), fine_source = temp("lion_fine_source.off"),
@@ -1818,7 +1818,7 @@ TEST(CommandLine, SubdivideRefinesTheSourceAndTheResultTogether)
     EXPECT_FALSE(std::ifstream(s1).good());
   }
   // Loop's border rule moves the reflex corner of an L into its notch, where a separate triangle
-  // lies 0.01 from it (hostile round 9): the refined pieces would overlap; status 1, nothing
+  // lies 0.01 from it: the refined pieces would overlap; status 1, nothing
   // written. --scheme linear keeps the optimized map.
   {
     IO::Triangle_soup l_source, l_start;

@@ -304,8 +304,9 @@ inline std::optional<long double> read_PLY_value(std::istream& in, const std::st
 // (the only ones it takes, saying so on std::cerr alone). Then the body, read value by value as it
 // reads it: list counts that it can read (it makes room for a count before reading the entries, an
 // uninitialized one where the read fails), not negative and no larger than the rest of the file can
-// hold (2^32 - 16 in a 200-byte file took 13 GB), and nothing after the elements the header
-// announces (it stops after them, silently dropping the rest), every value a number it reads.
+// hold (a count near 2^32 in a small file would take gigabytes), and nothing after the elements
+// the header announces (it stops after them, silently dropping the rest), every value a number it
+// reads.
 inline void check_PLY(const std::string& bytes, const std::string& shown)
 {
   struct Property { std::string name, type, count_type; };   // a list has a count type

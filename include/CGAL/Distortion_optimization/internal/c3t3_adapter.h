@@ -36,7 +36,7 @@ template <class T>
 struct Is_c3t3<T, std::void_t<typename T::Triangulation, typename T::Cells_in_complex_iterator>> : std::true_type {};
 
 // Dense indices of handles by open addressing on their addresses. The adapter looks up four per
-// cell, and std::unordered_map's (a division and a list node per lookup) took over a third of the
+// cell, and std::unordered_map's (a division and a list node per lookup) were a large share of the
 // adapter's time.
 class Handle_index
 {

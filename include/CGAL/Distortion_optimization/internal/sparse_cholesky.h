@@ -124,8 +124,7 @@ private:
 // of `block` (a vertex's coordinates), kept together by the fill-reducing ordering. Reads the lower
 // triangle. Usable as a preconditioner (solve). Below `cholmod_from` unknowns Eigen's simplicial
 // LDL^T is used even with CHOLMOD: a supernodal factorization's overhead outweighs its dense
-// blocks there (bench_sparse_solvers: 16.6K unknowns 0.029 s against 0.061 s per factorization,
-// 133K unknowns 0.33 s against 0.24 s).
+// blocks there (bench_sparse_solvers; the figures are in the manual's section on the sparse solver).
 template <int block>
 class Sparse_cholesky
 {

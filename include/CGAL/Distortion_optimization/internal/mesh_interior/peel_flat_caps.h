@@ -57,7 +57,7 @@ std::size_t peel_flat_caps(C3T3& c3t3, double thickness)
   const auto boundary_vertices = boundary_vertices_in_order(c3t3);
   const std::unordered_set<Vertex_handle> surface_vertex(boundary_vertices.begin(), boundary_vertices.end());
   // A cap's peeling can make caps only of its neighbours: after a pass over every cell, the passes
-  // look at those alone (a pass over every cell each time took minutes on thin volumes).
+  // look at those alone (a pass over every cell after each peeled cap would cost a pass per cap).
   std::vector<Cell_handle> candidates;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) candidates.push_back(c);
   std::size_t peeled = 0;

@@ -30,7 +30,7 @@ namespace internal {
 
 // A domain thinner (mean thickness 2 V / A) than the facet distance passes Mesh_3's surface
 // criteria with facets joining its two sides: the boundary is not recovered (the tetrahedra touch,
-// or the refinement runs to the vertex limit), or only after minutes of refinement. So does a
+// or the refinement runs to the vertex limit), or only after a long refinement. So does a
 // `slab` (see is_slab()) thinner than half the facet size: its sides are flat, and the facet
 // distance, which bounds the facets of a curved surface, does not refine them. Throws if the part
 // of volume `volume` and area `area`, named `what` in the message, is that thin; `lost` says what
