@@ -146,7 +146,11 @@ non-finite Jacobian.
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Distortion_optimization::Distortion_statistics
+#else
 std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::value, Distortion_optimization::Distortion_statistics>
+#endif
 compute_distortion(const TriangleMesh& tm, const TargetMap& target, const Measure& measure,
                    const NamedParameters& np = parameters::default_values())
 {
@@ -203,7 +207,11 @@ non-finite Jacobian.
 */
 template <class C3T3, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Distortion_optimization::Distortion_statistics
+#else
 std::enable_if_t<Distortion_optimization::internal::Is_c3t3<C3T3>::value, Distortion_optimization::Distortion_statistics>
+#endif
 compute_distortion(const C3T3& c3t3, const TargetMap& target, const Measure& measure,
                    const NamedParameters& np = parameters::default_values())
 {

@@ -221,7 +221,11 @@ lies inside another.
 */
 template <class TriangleMesh, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Distortion_optimization::Result
+#else
 std::enable_if_t<!Distortion_optimization::internal::Is_c3t3<TriangleMesh>::value, Distortion_optimization::Result>
+#endif
 minimize_distortion(const TriangleMesh& tm, TargetMap target, const Measure& measure,
                     const NamedParameters& np = parameters::default_values())
 {
@@ -303,7 +307,11 @@ lies inside another.
 */
 template <class C3T3, class TargetMap, class Measure,
           class NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Distortion_optimization::Result
+#else
 std::enable_if_t<Distortion_optimization::internal::Is_c3t3<C3T3>::value, Distortion_optimization::Result>
+#endif
 minimize_distortion(const C3T3& c3t3, TargetMap target, const Measure& measure,
                     const NamedParameters& np = parameters::default_values())
 {

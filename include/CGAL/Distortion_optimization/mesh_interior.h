@@ -464,7 +464,11 @@ if the surface is so far from the origin for its size that a cell of the complex
 rounded to the input's precision, is not positively oriented.
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Interior_mesh<GeomTraits>::C3T3
+#else
 typename Interior_mesh<internal::Interior_mesh_traits_of<NamedParameters>>::C3T3
+#endif
 mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using GT = internal::Interior_mesh_traits_of<NamedParameters>;

@@ -166,7 +166,11 @@ cell whose vertices are all constrained, before any round.
 lies inside another.
 */
 template <class TriangleMesh, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Untangle_result
+#else
 std::enable_if_t<!internal::Is_c3t3<TriangleMesh>::value, Untangle_result>
+#endif
 untangle(const TriangleMesh& tm, TargetMap target, const NamedParameters& np = CGAL::parameters::default_values())
 {
   auto adapter = internal::make_triangle_mesh_adapter(tm, target, np);
@@ -226,7 +230,11 @@ oriented.
 lies inside another.
 */
 template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Untangle_result
+#else
 std::enable_if_t<internal::Is_c3t3<C3T3>::value, Untangle_result>
+#endif
 untangle(const C3T3& c3t3, TargetMap target, const NamedParameters& np = CGAL::parameters::default_values())
 {
   auto adapter = internal::make_c3t3_adapter(c3t3, target, np);
