@@ -5,7 +5,7 @@
 
 #include "command_line.h"
 
-#include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
+#include <CGAL/Distortion_optimization/IO/file_names.h>
 #include <CGAL/Distortion_optimization/IO/tetgen.h>
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <sstream>
@@ -32,9 +33,16 @@ std::string default_measure_name() { return DO::measure_names()[0]; }
 
 DO::Any_measure measure_of(const Command_line& c) { return DO::measure_from_name(c.measure); }
 
-std::string extension(const std::string& path) { return DO::IO::internal::extension(path); }
+std::string extension(const std::string& path) { return DO::IO::file_extension(path); }
 
-std::string printable(const std::string& text) { return DO::IO::internal::printable(text); }
+std::string printable(const std::string& text) { return DO::IO::printable(text); }
+
+std::string shown_number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 // The usage text; the measures come from the package's registry of built-in measures.
 std::string usage()
@@ -242,7 +250,7 @@ void check_files(const Command_line& c)
   if(!c.energy_plot.empty()) outputs.emplace_back("--energy-plot", c.energy_plot);
   // A TetGen mesh is read from both files of its pair, whichever was named.
   for(const std::string option : {"--source", "--target"}) {
-    for(const std::string& file : DO::IO::internal::TetGen_files(option == "--source" ? c.source : c.target))
+    for(const std::string& file : DO::IO::TetGen_files(option == "--source" ? c.source : c.target))
       if(!file.empty()) inputs.emplace_back(option + " (its TetGen pair)", file);
   }
   const auto shown = [](const std::string& path) { return printable(path); };

@@ -74,6 +74,9 @@ std::string extension(const std::string& path);
 // A file name as messages show it (control bytes and invalid UTF-8 escaped), as the library's do.
 std::string printable(const std::string& text);
 
+// A number in a message, as printf's %g writes it (as the library's messages show numbers).
+std::string shown_number(double value);
+
 // The measure the command line names (checked by parse()).
 CGAL::Distortion_optimization::Any_measure measure_of(const Command_line& c);
 

@@ -82,7 +82,7 @@ void unlink_temporaries_and_reraise(int signal)
 // pipe rather than a file to replace; the library's writers decide it the same way.
 std::string destination(const std::string& path, bool* special)
 {
-  return CGAL::Distortion_optimization::IO::internal::destination(path, *special).string();
+  return CGAL::Distortion_optimization::IO::write_destination(path, *special).string();
 }
 
 } // namespace

@@ -98,9 +98,9 @@ void check_subdivision_fits(const Command_line& c, std::size_t cells)
   const double triangles = double(cells) * std::pow(4., double(c.subdivide)), needed = 340 * triangles;
   const double available = memory_available();
   if(needed > available)
-    throw DO::Invalid_input("--subdivide " + std::to_string(c.subdivide) + ": about " + DO::internal::shown_number(triangles) +
-                            " triangles, about " + DO::internal::shown_number(needed / 1e9) + " GB, more than the " +
-                            DO::internal::shown_number(std::max(available, 0.) / 1e9) +
+    throw DO::Invalid_input("--subdivide " + std::to_string(c.subdivide) + ": about " + shown_number(triangles) +
+                            " triangles, about " + shown_number(needed / 1e9) + " GB, more than the " +
+                            shown_number(std::max(available, 0.) / 1e9) +
                             " GB this run can still take: give fewer levels");
 }
 

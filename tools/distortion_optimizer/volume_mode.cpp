@@ -30,7 +30,7 @@ DO::IO::Tetrahedron_soup read_or_mesh_source(const Command_line& c, double& mesh
     // Mesh_3 stops at the limit where it checks it; past that, a moment later, the tool does.
     const Hard_deadline deadline(c.time_limit > 0 ? c.time_limit + (std::max)(2., 0.1 * c.time_limit) : 0.,
                                  c.source + ": mesh_interior: Mesh_3 did not finish within the time limit of " +
-                                   DO::internal::shown_number(c.time_limit) + " s (larger sizes ask for fewer tetrahedra)");
+                                   shown_number(c.time_limit) + " s (larger sizes ask for fewer tetrahedra)");
     DO::tetrahedra_from_c3t3(c.cell_size > 0 ? DO::mesh_interior(surface, P::cell_size(c.cell_size, limit))
                                              : DO::mesh_interior(surface, limit), soup.points, soup.cells);
     soup.labels.assign(soup.cells.size(), 1);

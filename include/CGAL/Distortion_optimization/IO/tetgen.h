@@ -102,19 +102,17 @@ inline Tetrahedron_soup read_TetGen(std::istream& node, std::istream& ele, const
   return soup;
 }
 
-namespace internal {
-
-// The .node and .ele files of the TetGen mesh that `path` names (either one); empty if it names
-// neither. The reader below opens both, and a program must not write over either.
+/// \ingroup PkgDistortionOptimizationIO
+/// The `.node` and `.ele` files of the TetGen mesh that `path` names (either one), both of which
+/// `read_TetGen()` opens: a program that reads such a mesh must not write over either. Two empty
+/// strings if `path` names neither (its extension is not `node` or `ele`).
 inline std::array<std::string, 2> TetGen_files(const std::string& path)
 {
-  const std::string e = extension(path);
+  const std::string e = internal::extension(path);
   if(e != "ele" && e != "node") return {};
   const std::string stem = path.substr(0, path.size() - e.size() - 1);
   return {stem + ".node", stem + ".ele"};
 }
-
-} // namespace internal
 
 /// \ingroup PkgDistortionOptimizationIO
 /// Reads `stem.node` and `stem.ele` with `read_TetGen()`, given the path of either one (or of
@@ -122,7 +120,7 @@ inline std::array<std::string, 2> TetGen_files(const std::string& path)
 /// \throws Invalid_input if a file cannot be opened, is malformed, or there is no tetrahedron.
 inline Tetrahedron_soup read_TetGen(const std::string& path)
 {
-  const auto [node_path, ele_path] = internal::TetGen_files(path);
+  const auto [node_path, ele_path] = TetGen_files(path);
   if(node_path.empty()) throw Invalid_input(internal::printable(path) + ": a TetGen mesh is a .node/.ele pair");
   std::ifstream node(node_path, std::ios::binary), ele(ele_path, std::ios::binary);
   if(!node) throw Invalid_input(internal::printable(node_path) + ": cannot open the file");

@@ -30,11 +30,15 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace IO {
-namespace internal {
 
-// Where the bytes for `path` go, portably (std::filesystem): the file a symbolic link names, and
-// whether that is a device or a pipe, written into, rather than a file to replace.
-inline std::filesystem::path destination(const std::string& path, bool& special)
+/// \ingroup PkgDistortionOptimizationIO
+/// Where `write_file_atomically()` puts the bytes for `path`: the file a symbolic link names (else
+/// `path` itself), with `special` set when that is a device or a pipe, which is written into
+/// rather than replaced. A program that stages its outputs itself (to remove them on signals, say)
+/// makes its temporary files beside it, as `write_file_atomically()` does.
+/// \throws Invalid_input if `path` is a folder, a symbolic link to nothing, or a link that cannot
+/// be resolved.
+inline std::filesystem::path write_destination(const std::string& path, bool& special)
 {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -43,14 +47,16 @@ inline std::filesystem::path destination(const std::string& path, bool& special)
   if(error || !fs::exists(link)) return path;   // a new file
   const fs::file_status status = fs::status(path, error);
   if(fs::is_symlink(link) && (error || !fs::exists(status)))
-    throw Invalid_input(printable(path) + ": a symbolic link to nothing");
-  if(fs::is_directory(status)) throw Invalid_input(printable(path) + ": a folder, not a file name");
+    throw Invalid_input(internal::printable(path) + ": a symbolic link to nothing");
+  if(fs::is_directory(status)) throw Invalid_input(internal::printable(path) + ": a folder, not a file name");
   special = !fs::is_regular_file(status);
   if(!fs::is_symlink(link) || special) return path;   // a device is written through its name
   const fs::path place = fs::canonical(path, error);
-  if(error) throw Invalid_input(printable(path) + ": cannot resolve the symbolic link");
+  if(error) throw Invalid_input(internal::printable(path) + ": cannot resolve the symbolic link");
   return place;
 }
+
+namespace internal {
 
 // A new file beside `place` with a unique hidden name, created exclusively ("x": C11, C++17):
 // its name, or empty if none could be made.
@@ -70,10 +76,6 @@ inline std::string unique_file_beside(const std::filesystem::path& place)
   }
   return "";
 }
-
-} // namespace internal
-
-namespace internal {
 
 // Formats each double inserted into a stream as the shortest decimal that reads back to the
 // same value (std::to_chars): several times faster than the 17 significant digits of printf-style
@@ -104,7 +106,7 @@ protected:
 inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write)
 {
   bool special = false;
-  const std::filesystem::path place = internal::destination(path, special);
+  const std::filesystem::path place = write_destination(path, special);
   if(place.filename().empty()) throw Invalid_input(internal::printable(path) + ": not a file name");
   const auto fill = [&](const std::string& name) {
     std::ofstream out(name, std::ios::binary | std::ios::trunc);
