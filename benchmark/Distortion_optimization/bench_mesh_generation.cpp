@@ -215,28 +215,9 @@ void volume(int k)
 {
   header(("3D: the cube [-1, 1]^3 in " + std::to_string(6 * k * k * k) + " tetrahedra, boundary mapped by x |x|").c_str());
   // The regular source: k^3 cubes of side 2 / k, 6 Kuhn tetrahedra each.
-  std::vector<std::array<double, 3>> points;
-  for(int z = 0; z <= k; ++z)
-    for(int y = 0; y <= k; ++y)
-      for(int x = 0; x <= k; ++x) points.push_back({-1 + 2. * x / k, -1 + 2. * y / k, -1 + 2. * z / k});
-  const auto at = [&](int x, int y, int z) { return std::size_t((z * (k + 1) + y) * (k + 1) + x); };
-  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  std::vector<std::array<std::size_t, 4>> tets;
-  for(int z = 0; z < k; ++z)
-    for(int y = 0; y < k; ++y)
-      for(int x = 0; x < k; ++x)
-        for(const auto& p : permutations) {
-          int c[3] = {x, y, z};
-          std::array<std::size_t, 4> t;
-          t[0] = at(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s) {
-            ++c[p[s]];
-            t[s + 1] = at(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        }
+  const Cube_tetrahedra block = cube_tetrahedra(k, [k](int i) { return -1 + 2. * i / k; });
   Volume source;
-  DO::c3t3_from_tetrahedra(source, points, tets);
+  DO::c3t3_from_tetrahedra(source, block.points, block.cells);
   const auto boundary = boundary_vertices(source);
 
   Surface target_boundary;   // the image of the cube's boundary: the domain the other meshers get

@@ -4,6 +4,8 @@
 #ifndef DISTORTION_OPTIMIZATION_EXAMPLES_VOLUME_EXAMPLES_H
 #define DISTORTION_OPTIMIZATION_EXAMPLES_VOLUME_EXAMPLES_H
 
+#include "cube_tetrahedra.h"
+
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/mesh_interior.h>
 
@@ -41,33 +43,12 @@ inline Surface cube(double h)
   return s;
 }
 
-// The cube [-h, h]^3 as n^3 small cubes, each cut into the six tetrahedra around its diagonal
-// (Freudenthal's subdivision, whose tetrahedra match across the small cubes' faces).
+// The cube [-h, h]^3 as n^3 small cubes, each cut into six tetrahedra (cube_tetrahedra.h).
 inline Volume cube_volume(double h, int n)
 {
-  std::vector<std::array<double, 3>> points;
-  for(int k = 0; k <= n; ++k)
-    for(int j = 0; j <= n; ++j)
-      for(int i = 0; i <= n; ++i) points.push_back({h * (2. * i / n - 1), h * (2. * j / n - 1), h * (2. * k / n - 1)});
-  // A path from a small cube's lowest corner to its highest along the axes in the order a, b, c;
-  // the odd orders have their last two vertices swapped, so that every tetrahedron is positive.
-  const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
-  std::vector<std::array<std::size_t, 4>> tetrahedra;
-  for(int k = 0; k < n; ++k)
-    for(int j = 0; j < n; ++j)
-      for(int i = 0; i < n; ++i)
-        for(int o = 0; o < 6; ++o) {
-          int corner[3] = {i, j, k};
-          std::array<std::size_t, 4> t;
-          for(int v = 0; v < 4; ++v) {
-            if(v > 0) ++corner[orders[o][v - 1]];
-            t[v] = std::size_t(corner[0] + (n + 1) * (corner[1] + (n + 1) * corner[2]));
-          }
-          if(o >= 3) std::swap(t[2], t[3]);
-          tetrahedra.push_back(t);
-        }
+  const Cube_tetrahedra block = cube_tetrahedra(n, [h, n](int i) { return h * (2. * i / n - 1); });
   Volume volume;
-  CGAL::Distortion_optimization::c3t3_from_tetrahedra(volume, points, tetrahedra);
+  CGAL::Distortion_optimization::c3t3_from_tetrahedra(volume, block.points, block.cells);
   return volume;
 }
 

@@ -4,6 +4,8 @@
 #ifndef DISTORTION_OPTIMIZATION_TEST_KUHN_BLOCK_H
 #define DISTORTION_OPTIMIZATION_TEST_KUHN_BLOCK_H
 
+#include "../../examples/Distortion_optimization/cube_tetrahedra.h"
+
 #include <CGAL/Distortion_optimization/IO/simplex_soup.h>
 
 #include <algorithm>
@@ -15,28 +17,10 @@
 
 inline CGAL::Distortion_optimization::IO::Tetrahedron_soup kuhn_block(int k)
 {
+  auto cut = volume_examples::cube_tetrahedra(k, [](int i) { return double(i); });
   CGAL::Distortion_optimization::IO::Tetrahedron_soup block;
-  for(int z = 0; z <= k; ++z)
-    for(int y = 0; y <= k; ++y)
-      for(int x = 0; x <= k; ++x) block.points.push_back({double(x), double(y), double(z)});
-  const auto at = [k](int x, int y, int z) { return std::size_t((z * (k + 1) + y) * (k + 1) + x); };
-  for(int z = 0; z < k; ++z)
-    for(int y = 0; y < k; ++y)
-      for(int x = 0; x < k; ++x) {
-        const std::size_t steps[6][2] = {{at(x + 1, y, z), at(x + 1, y + 1, z)}, {at(x + 1, y, z), at(x + 1, y, z + 1)},
-                                         {at(x, y + 1, z), at(x + 1, y + 1, z)}, {at(x, y + 1, z), at(x, y + 1, z + 1)},
-                                         {at(x, y, z + 1), at(x + 1, y, z + 1)}, {at(x, y, z + 1), at(x, y + 1, z + 1)}};
-        for(const auto& st : steps) {
-          std::array<std::size_t, 4> t = {at(x, y, z), st[0], st[1], at(x + 1, y + 1, z + 1)};
-          std::array<std::array<double, 3>, 3> d;
-          for(int i = 0; i < 3; ++i)
-            for(int c = 0; c < 3; ++c) d[i][c] = block.points[t[i + 1]][c] - block.points[t[0]][c];
-          const double det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-                             d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
-          if(det < 0) std::swap(t[1], t[2]);
-          block.cells.push_back(t);
-        }
-      }
+  block.points = std::move(cut.points);
+  block.cells = std::move(cut.cells);
   return block;
 }
 

@@ -3,6 +3,8 @@
 #ifndef DISTORTION_OPTIMIZATION_TEST_COMPLEXES_H
 #define DISTORTION_OPTIMIZATION_TEST_COMPLEXES_H
 
+#include "../../examples/Distortion_optimization/cube_tetrahedra.h"
+
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -46,30 +48,9 @@ std::unordered_set<typename Complex::Triangulation::Vertex_handle> boundary_vert
 inline C3t3 cube_complex(int n, const std::function<bool(int, int, int)>& keep = [](int, int, int) { return true; },
                          double edge = 1)
 {
-  std::vector<std::array<double, 3>> points;
-  for(int k = 0; k <= n; ++k)
-    for(int j = 0; j <= n; ++j)
-      for(int i = 0; i <= n; ++i) points.push_back({i * edge, j * edge, k * edge});
-  const auto at = [&](int i, int j, int k) { return std::size_t((k * (n + 1) + j) * (n + 1) + i); };
-  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  std::vector<std::array<std::size_t, 4>> tets;
-  for(int k = 0; k < n; ++k)
-    for(int j = 0; j < n; ++j)
-      for(int i = 0; i < n; ++i) {
-        if(!keep(i, j, k)) continue;
-        for(const auto& p : permutations) {
-          int c[3] = {i, j, k};
-          std::array<std::size_t, 4> t;
-          t[0] = at(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s) {
-            ++c[p[s]];
-            t[s + 1] = at(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        }
-      }
+  const auto block = volume_examples::cube_tetrahedra(n, [edge](int i) { return i * edge; }, keep);
   C3t3 c3t3;
-  CGAL::Distortion_optimization::c3t3_from_tetrahedra(c3t3, points, tets);
+  CGAL::Distortion_optimization::c3t3_from_tetrahedra(c3t3, block.points, block.cells);
   return c3t3;
 }
 
