@@ -1,10 +1,12 @@
-// Measures, signed SVD and the per-cell kernel (no mesh involved).
+// Measures, signed SVD and the per-cell kernel (no mesh involved): values, closed forms, barriers,
+// the SVD-free forms and the SVD; their derivatives are in test_measure_derivatives.cpp.
 
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cell_hessian.h>
 #include <CGAL/Distortion_optimization/measure_by_name.h>
 #include <CGAL/Distortion_optimization/measures.h>
 
+#include "measure_test_helpers.h"
 #include "reference_svd.h"
 
 #include <Eigen/Eigenvalues>
@@ -18,100 +20,7 @@
 #include <tuple>
 #include <type_traits>
 
-namespace DO = CGAL::Distortion_optimization;
-using DO::internal::Matrix;
-using DO::internal::Vector;
-
-namespace {
-
-const double inf = std::numeric_limits<double>::infinity();
-
-auto all_measures()
-{
-  auto custom = DO::make_measure(
-    [](const auto& s) { return (s.array() - 2.).square().sum(); },
-    [](const auto& s) { return (2. * (s.array() - 2.)).matrix().eval(); }, "custom", false, false);
-  return std::make_tuple(DO::Conformal_dilatation(), DO::Condition_number(), DO::MIPS(),
-                         DO::Isometric_dilatation(), DO::ARAP(), DO::Symmetric_dirichlet(),
-                         DO::Volume_distortion(), DO::Dirichlet(),
-                         DO::Product<DO::Conformal_dilatation, DO::Isometric_dilatation>(),
-                         DO::Weighted_sum<DO::Symmetric_dirichlet, DO::ARAP>(0.7, {}, 0.3, {}), custom,
-                         DO::Product_of_measures({"conformal", "isometric"}),
-                         DO::Sum_of_measures(DO::measures_internal::parse_sum("0.5*conformal+2*isometric*mips")));
-}
-
-template <class F>
-void for_each_measure(F f)
-{
-  std::apply([&](const auto&... m) { (f(m), ...); }, all_measures());
-}
-
-std::mt19937& rng()
-{
-  static std::mt19937 g(12345);
-  return g;
-}
-
-double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng()); }
-
-template <int n>
-Matrix<n> random_rotation()
-{
-  if constexpr(n == 2) {
-    const double a = uniform(-M_PI, M_PI);
-    Matrix<2> R;
-    R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
-    return R;
-  } else {
-    Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-    return q.normalized().toRotationMatrix();
-  }
-}
-
-template <int n>
-Matrix<n> with_singular_values(const Vector<n>& s)
-{
-  return random_rotation<n>() * s.asDiagonal() * random_rotation<n>().transpose();
-}
-
-// Independent formulas, written from the paper's equations 8-16.
-template <int n>
-double expected(const std::string& name, const Vector<n>& s)
-{
-  const double p = s.prod();
-  if(name == "conformal") {
-    if(n == 2) return s[0] / s[1];
-    return std::max(s[0] * s[1] / (s[2] * s[2]), s[0] * s[0] / (s[1] * s[2]));
-  }
-  if(name == "condition") return s[0] / s[n - 1];
-  if(name == "mips") return n == 2 ? s[0] / s[1] + s[1] / s[0] : s.squaredNorm() / std::cbrt(p * p);
-  if(name == "isometric") return std::max(s[0], 1 / s[n - 1]);
-  if(name == "arap") { double e = 0; for(int i = 0; i < n; ++i) e += (s[i] - 1) * (s[i] - 1); return e; }
-  if(name == "symmetric_dirichlet") { double e = 0; for(int i = 0; i < n; ++i) e += s[i] * s[i] + 1 / (s[i] * s[i]); return e / (2 * n); }
-  if(name == "volume") return std::max(p, 1 / p);
-  if(name == "dirichlet") return s.squaredNorm() / n;
-  if(name == "conformal*isometric") return expected<n>("conformal", s) * expected<n>("isometric", s);
-  if(name == "custom") return (s.array() - 2.).square().sum();
-  if(name == "0.5*conformal+2*isometric*mips")
-    return 0.5 * expected<n>("conformal", s) + 2 * expected<n>("isometric", s) * expected<n>("mips", s);
-  return 0.7 * expected<n>("symmetric_dirichlet", s) + 0.3 * expected<n>("arap", s);
-}
-
-template <int n>
-void check_closed_forms(const Vector<n>& s)
-{
-  for_each_measure([&](const auto& m) {
-    const double e = expected<n>(m.name(), s);
-    EXPECT_NEAR(m.template value<n>(s), e, 1e-13 * std::abs(e)) << m.name() << " n=" << n;
-    // Jacobians with these singular values, rotated at random on both sides (Definition 2.1).
-    for(int k = 0; k < 5; ++k) {
-      const Matrix<n> J = with_singular_values<n>(s);
-      EXPECT_NEAR(DO::internal::jacobian_distortion<n>(m, J), e, 1e-11 * std::abs(e)) << m.name() << " n=" << n;
-    }
-  });
-}
-
-} // namespace
+using namespace measure_tests;
 
 TEST(Measures, ClosedFormsOnDiagonalAndRotatedJacobians)
 {
@@ -203,128 +112,6 @@ TEST(Measures, NormalizedMeasuresGrowToInfinityAndRejectInversions)
   check_barrier<3>();
 }
 
-template <int n>
-Matrix<n> random_well_conditioned()
-{
-  // Distinct singular values: max-type measures (K, C, condition) have kinks where they meet,
-  // and central differences straddling a kink are no reference.
-  Vector<n> s;
-  do {
-    for(int i = 0; i < n; ++i) s[i] = uniform(0.5, 2.);
-    std::sort(s.data(), s.data() + n, std::greater<double>());
-  } while(((s.head(n - 1) - s.tail(n - 1)).array() < 0.05).any());
-  return with_singular_values<n>(s);
-}
-
-// dD/dJ by central differences of step h in each entry.
-template <int n, class Measure>
-Matrix<n> central_differences(const Measure& m, const Matrix<n>& J, double h)
-{
-  Matrix<n> fd;
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j) {
-      Matrix<n> Jp = J, Jm = J;
-      Jp(i, j) += h;
-      Jm(i, j) -= h;
-      fd(i, j) = (DO::internal::jacobian_distortion<n>(m, Jp) - DO::internal::jacobian_distortion<n>(m, Jm)) / (2 * h);
-    }
-  return fd;
-}
-
-template <int n>
-void check_gradient_against_finite_differences()
-{
-  for_each_measure([&](const auto& m) {
-    for(int trial = 0; trial < 50; ++trial) {
-      const Matrix<n> J = random_well_conditioned<n>();
-      Matrix<n> dJ;
-      DO::internal::jacobian_distortion<n>(m, J, dJ);
-      const double h = 1e-6;
-      const Matrix<n> fd = central_differences<n>(m, J, h);
-      EXPECT_LE((dJ - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << "\nJ=\n" << J;
-      // And the derivative in sigma itself.
-      const Vector<n> s = DO::internal::signed_singular_values(J);
-      const Vector<n> g = m.template gradient<n>(s);
-      for(int i = 0; i < n; ++i) {
-        Vector<n> sp = s, sm = s;
-        sp[i] += h;
-        sm[i] -= h;
-        const double fdi = (m.template value<n>(sp) - m.template value<n>(sm)) / (2 * h);
-        EXPECT_NEAR(g[i], fdi, 1e-6 * std::max(1., std::abs(fdi))) << m.name() << " i=" << i;
-      }
-    }
-  });
-}
-
-TEST(Measures, JacobianGradientMatchesFiniteDifferences2D) { check_gradient_against_finite_differences<2>(); }
-TEST(Measures, JacobianGradientMatchesFiniteDifferences3D) { check_gradient_against_finite_differences<3>(); }
-
-// The measures with a Hessian in the singular values: it matches central differences of their
-// gradient. Then the cell Hessian in the vertices (cell_hessian.h, unprojected) matches central
-// differences of the cell's vertex gradient, and its projection is positive semi-definite, equal
-// to it where it already was.
-template <int n>
-void check_hessians()
-{
-  std::size_t measures_with_hessian = 0;
-  for_each_measure([&](const auto& m) {
-    using Measure = std::decay_t<decltype(m)>;
-    if constexpr(DO::measures_internal::Has_hessian<Measure, n>::value) {
-      ++measures_with_hessian;
-      for(int trial = 0; trial < 30; ++trial) {
-        const Matrix<n> J = random_well_conditioned<n>();
-        const Vector<n> s = DO::internal::signed_singular_values(J);
-        const Matrix<n> h = m.template hessian<n>(s);
-        const double step = 1e-6;
-        for(int j = 0; j < n; ++j) {
-          Vector<n> sp = s, sm = s;
-          sp[j] += step;
-          sm[j] -= step;
-          const Vector<n> fd = (m.template gradient<n>(sp) - m.template gradient<n>(sm)) / (2 * step);
-          EXPECT_LE((h.col(j) - fd).norm(), 1e-6 * std::max(1., fd.norm())) << m.name() << " n=" << n << " j=" << j;
-        }
-        // A cell: a random source, its target edges J Dm.
-        const Matrix<n> Dm = random_well_conditioned<n>(), M = Dm.inverse();
-        const Matrix<n> Ds = J * Dm;
-        DO::internal::Cell_hessian<n> H, projected;
-        std::array<Vector<n>, n + 1> gradient, other;
-        ASSERT_TRUE(DO::internal::cell_hessian<n>(m, J, M, H, gradient, false)) << m.name();
-        ASSERT_TRUE(DO::internal::cell_hessian<n>(m, J, M, projected, other, true)) << m.name();
-        EXPECT_LE((H - H.transpose()).norm(), 1e-10 * H.norm()) << m.name();
-        // Moving vertex i by e_a moves Ds: every column for vertex 0 (with a minus), column i-1 otherwise.
-        const auto gradient_at = [&](int i, int a, double t) {
-          Matrix<n> D = Ds;
-          if(i == 0) D.row(a).array() -= t;
-          else D(a, i - 1) += t;
-          DO::internal::Cell_hessian<n> unused;
-          std::array<Vector<n>, n + 1> g;
-          DO::internal::cell_hessian<n>(m, Matrix<n>(D * M), M, unused, g, false);
-          Eigen::Matrix<double, n * (n + 1), 1> flat;
-          for(int k = 0; k <= n; ++k) flat.template segment<n>(n * k) = g[k];
-          return flat;
-        };
-        for(int i = 0; i <= n; ++i)
-          for(int a = 0; a < n; ++a) {
-            const Eigen::Matrix<double, n * (n + 1), 1> fd = (gradient_at(i, a, step) - gradient_at(i, a, -step)) / (2 * step);
-            EXPECT_LE((H.col(n * i + a) - fd).norm(), 1e-5 * std::max(1., fd.norm())) << m.name() << " n=" << n;
-          }
-        const Eigen::SelfAdjointEigenSolver<DO::internal::Cell_hessian<n>> unprojected(H), psd(projected), added(projected - H);
-        EXPECT_GE(psd.eigenvalues().minCoeff(), -1e-10 * std::max(1., psd.eigenvalues().maxCoeff())) << m.name();
-        // Only negative modes are dropped: what the projection adds is positive semi-definite.
-        EXPECT_GE(added.eigenvalues().minCoeff(), -1e-10 * std::max(1., psd.eigenvalues().maxCoeff())) << m.name();
-        if(unprojected.eigenvalues().minCoeff() > 1e-8 * unprojected.eigenvalues().maxCoeff()) {
-          EXPECT_LE((H - projected).norm(), 1e-10 * H.norm()) << m.name();
-        }
-      }
-    }
-  });
-  // symmetric_dirichlet, mips, arap, dirichlet and the weighted sum of SD and ARAP.
-  EXPECT_EQ(measures_with_hessian, 5u);
-}
-
-TEST(Measures, HessiansMatchFiniteDifferences2D) { check_hessians<2>(); }
-TEST(Measures, HessiansMatchFiniteDifferences3D) { check_hessians<3>(); }
-
 template <int n, class M>
 void check_svd_free_form(const M& m)
 {
@@ -378,69 +165,6 @@ TEST(Measures, GradientWithoutSingularVectorsMatchesTheExplicitOnes)
   EXPECT_GT(fast_path, 200);   // both paths were exercised
   EXPECT_LT(fast_path, 400);
 }
-
-// The kernel on several cells at once (in SIMD lanes) gives what it gives cell by cell: on
-// separated and nearly conformal cells (the 3D fallback), an inverted one, a flat one and one
-// with a NaN vertex, over a count that is not a multiple of the lanes.
-template <int n>
-void check_batched_kernel()
-{
-  DO::internal::Simplicial_map<n> map;
-  const int cells = 29;
-  for(int c = 0; c < cells; ++c) {
-    std::array<std::uint32_t, n + 1> cell;
-    Matrix<n> Dm = with_singular_values<n>(Vector<n>::Constant(1.));
-    for(int i = 0; i <= n; ++i) {
-      cell[i] = static_cast<std::uint32_t>(map.target.size());
-      Vector<n> x = Vector<n>::Zero();
-      if(i > 0) x = Dm.col(i - 1);
-      if(c % 3 == 1) x = 1.7 * x;                                                  // conformal: fallback
-      else if(c % 3 == 2) x = with_singular_values<n>(Vector<n>::LinSpaced(2., 0.6)) * x;   // separated
-      map.target.push_back(x);
-    }
-    if(c == 5) std::swap(map.target[cell[1]], map.target[cell[2]]);               // inverted
-    if(c == 8) map.target[cell[n]] = map.target[cell[1]];                          // flat
-    if(c == 11) map.target[cell[0]][0] = std::numeric_limits<double>::quiet_NaN();
-    map.add_cell(cell, Dm, 1);
-  }
-  const auto check = [&](const auto& m) {
-    std::vector<double> values(cells);
-    std::vector<std::array<Vector<n>, n + 1>> gradients(cells);
-    std::vector<Vector<n>> sigma(cells);
-    DO::internal::cell_distortions<n>(m, map, cells, [](std::size_t k) { return k; }, values.data(), gradients.data(), sigma.data());
-    std::vector<double> values_only(cells);
-    DO::internal::cell_distortions<n>(m, map, cells, [](std::size_t k) { return k; }, values_only.data());
-    for(int c = 0; c < cells; ++c) {
-      std::array<Vector<n>, n + 1> g;
-      Vector<n> s;
-      // Cell by cell: a measure with an invariant form through the lanes alone (a cell's value must
-      // not depend on its neighbours in a batch, to the last bit), the others from the Jacobian.
-      double v;
-      if constexpr(DO::internal::Has_invariant_form<std::decay_t<decltype(m)>, n>::value) {
-        DO::internal::cell_distortions<n>(m, map, 1, [c](std::size_t) { return std::size_t(c); }, &v, &g, &s);
-      } else {
-        Matrix<n> dJ;
-        v = DO::internal::jacobian_distortion<n>(m, map.jacobian(c), dJ, &s);
-        DO::internal::vertex_gradients_from_jacobian_gradient(map, c, dJ, g);
-      }
-      // The same formulas; only the Jacobian's products may be ordered differently, and values
-      // alone may come from the Gram eigenvalues where the full SVD gives the others (singular
-      // values within 1e-16 of each other's: ARAP's (s - 1)^2 on a rotation differ by 1e-32).
-      for(double batched : {values[c], values_only[c]}) {
-        if(std::isnan(v)) EXPECT_TRUE(std::isnan(batched)) << m.name() << " cell " << c;
-        else if(std::isinf(v)) EXPECT_EQ(batched, v) << m.name() << " cell " << c;
-        else EXPECT_NEAR(batched, v, 1e-14 * (1 + v)) << m.name() << " cell " << c;
-      }
-      if(!std::isfinite(v)) continue;
-      EXPECT_LE((sigma[c] - s).norm(), 1e-14 * s.norm()) << m.name() << " cell " << c;
-      for(int i = 0; i <= n; ++i) EXPECT_LE((gradients[c][i] - g[i]).norm(), 1e-13 * (1 + g[i].norm())) << m.name() << " cell " << c;
-    }
-  };
-  for_each_measure(check);
-}
-
-TEST(Measures, BatchedKernelMatchesTheKernelCellByCell2D) { check_batched_kernel<2>(); }
-TEST(Measures, BatchedKernelMatchesTheKernelCellByCell3D) { check_batched_kernel<3>(); }
 
 TEST(Measures, SvdFreeFormsAgreeWithTheSvdForms)
 {
