@@ -84,9 +84,9 @@ public:
     // The default schedule: Newton's steps alone, where a local sweep between them costs more
     // than it gains; otherwise alternating, as the reweighted Laplacian's steps need the sweeps.
     // Also Newton's steps alone where they are a smooth model's with the measure's minimizers
-    // (global_step.h), as the measure's local moves gain little near its kink. With a sliding
-    // boundary the model's minimizers differ, and its Hessian is only a proxy metric: the sweeps
-    // must go on (the steps alone stall at a higher energy).
+    // (global_step/newton_direction.h), as the measure's local moves gain little near its kink.
+    // With a sliding boundary the model's minimizers differ, and its Hessian is only a proxy
+    // metric: the sweeps must go on (the steps alone stall at a higher energy).
     // A step that one cell's safe step holds back may gain almost nothing: a sweep then follows it
     // in the same iteration (minimize()), so that the run stops only when neither gains.
     const bool newton_alone = global_step_ && global_step_->is_newton() && !global_step_->model_misses_minimizers();
