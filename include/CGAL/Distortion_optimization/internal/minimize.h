@@ -26,6 +26,7 @@
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
 #include <CGAL/Distortion_optimization/internal/optimizer_state.h>
 #include <CGAL/Distortion_optimization/internal/partitioned_sweep.h>
+#include <CGAL/Distortion_optimization/internal/scaling.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -203,11 +204,8 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   const Workers workers(options.threads);
   using State = Optimizer_state<n, Measure, GeomTraits>;
   State state(problem, measure, traits, workers);
-  // A start energy above 2 is brought into [1, 2) by scaling the weights by a power of two (exact:
-  // no step changes): a target 2^200 times smaller than its source has symmetric Dirichlet
-  // energies near 2^600 in 2D, whose gradients' squares overflowed, and the run stopped at once.
-  const double start_energy = state.energy();
-  if(start_energy > 2 && std::isfinite(start_energy)) problem.scale_weights(unit_scale(start_energy));
+  // A start energy above 2 is brought into [1, 2) by scaling the weights (weight_scale()).
+  problem.scale_weights(weight_scale(state.energy()));
   Steps<State> steps(state, problem, options, workers);
 
   Result result;
