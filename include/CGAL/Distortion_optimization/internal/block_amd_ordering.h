@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// The fill-reducing ordering of the triangle meshes' Newton systems (global_step.h).
+// The fill-reducing ordering of the triangle meshes' Newton systems
+// (global_step/lagged_factorization.h).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BLOCK_AMD_ORDERING_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_BLOCK_AMD_ORDERING_H

@@ -153,10 +153,7 @@ public:
       cells.push_back(cell);
       cell_of.push_back(Cell_handle(c));
     }
-    double source_largest = 0, target_largest = 0;
-    for(const Vector<3>& x : source) source_largest = std::max(source_largest, x.cwiseAbs().maxCoeff());
-    for(const Vector<3>& y : map.target) target_largest = std::max(target_largest, y.cwiseAbs().maxCoeff());
-    scale = coordinate_scale(source_largest, target_largest);
+    scale = coordinate_scale(source, map.target);
     map.resize_cells(cells.size());
     std::size_t flat = cells.size();   // the first cell flat in doubles
     using P = typename GeomTraits::Point_3;
@@ -166,6 +163,9 @@ public:
       for(int i = 0; i < 4; ++i) p[i] = P(source[cell[i]][0], source[cell[i]][1], source[cell[i]][2]);
       if(traits.orientation_3_object()(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE)
         throw Invalid_input("source cell " + std::to_string(k) + " of the complex is not positively oriented (degenerate)");
+      // The source's edges are scaled rather than its points, which the exact orientation test
+      // reads as they are: a difference scaled once is rounded once, where points scaled down
+      // below 2^-1022 would lose bits before it.
       Matrix<3> Dm;
       for(int j = 0; j < 3; ++j) Dm.col(j) = source[cell[j + 1]] - source[cell[0]];
       if(!map.set_cell(k, cell, scale * Dm, +1)) flat = std::min(flat, k);
@@ -180,7 +180,7 @@ public:
     if(flat < cells.size())
       throw Invalid_input("source cell " + std::to_string(flat) + " of the complex is degenerate in double precision (its "
                           "vertices are not exactly coplanar, but so nearly that its rounded edges are)");
-    for(Vector<3>& y : map.target) y *= scale;
+    scale_exactly(map.target, scale);
   }
 
   // Writes the targets x of the free vertices into the target map.

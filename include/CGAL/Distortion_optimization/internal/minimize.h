@@ -26,6 +26,7 @@
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
 #include <CGAL/Distortion_optimization/internal/optimizer_state.h>
 #include <CGAL/Distortion_optimization/internal/partitioned_sweep.h>
+#include <CGAL/Distortion_optimization/internal/scaling.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -84,9 +85,9 @@ public:
     // The default schedule: Newton's steps alone, where a local sweep between them costs more
     // than it gains; otherwise alternating, as the reweighted Laplacian's steps need the sweeps.
     // Also Newton's steps alone where they are a smooth model's with the measure's minimizers
-    // (global_step.h), as the measure's local moves gain little near its kink. With a sliding
-    // boundary the model's minimizers differ, and its Hessian is only a proxy metric: the sweeps
-    // must go on (the steps alone stall at a higher energy).
+    // (global_step/newton_direction.h), as the measure's local moves gain little near its kink.
+    // With a sliding boundary the model's minimizers differ, and its Hessian is only a proxy
+    // metric: the sweeps must go on (the steps alone stall at a higher energy).
     // A step that one cell's safe step holds back may gain almost nothing: a sweep then follows it
     // in the same iteration (minimize()), so that the run stops only when neither gains.
     const bool newton_alone = global_step_ && global_step_->is_newton() && !global_step_->model_misses_minimizers();
@@ -203,11 +204,8 @@ Result minimize(Optimization_problem<n>& problem, const Measure& measure, const 
   const Workers workers(options.threads);
   using State = Optimizer_state<n, Measure, GeomTraits>;
   State state(problem, measure, traits, workers);
-  // A start energy above 2 is brought into [1, 2) by scaling the weights by a power of two (exact:
-  // no step changes): a target 2^200 times smaller than its source has symmetric Dirichlet
-  // energies near 2^600 in 2D, whose gradients' squares overflowed, and the run stopped at once.
-  const double start_energy = state.energy();
-  if(start_energy > 2 && std::isfinite(start_energy)) problem.scale_weights(unit_scale(start_energy));
+  // A start energy above 2 is brought into [1, 2) by scaling the weights (weight_scale()).
+  problem.scale_weights(weight_scale(state.energy()));
   Steps<State> steps(state, problem, options, workers);
 
   Result result;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// The measure whose projected Newton steps a measure takes (global_step.h).
+// The measure whose projected Newton steps a measure takes (global_step/newton_direction.h).
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NEWTON_MODEL_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_NEWTON_MODEL_H

@@ -12,6 +12,7 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>
+#include <CGAL/Distortion_optimization/internal/scaling.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
 #include <cstdint>
@@ -75,8 +76,8 @@ struct Optimization_problem
   // optimizer changes, only the size of its energies and derivatives.
   void scale_weights(double factor)
   {
-    for(double& w : incidence_weight) w *= factor;
-    for(double& w : cell_weight) w *= factor;
+    scale_exactly(incidence_weight, factor);
+    scale_exactly(cell_weight, factor);
     total_weight *= factor;
   }
 

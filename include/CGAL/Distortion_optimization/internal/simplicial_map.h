@@ -12,6 +12,7 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/cell_derivatives.h>
+#include <CGAL/Distortion_optimization/internal/scaling.h>
 #include <CGAL/Distortion_optimization/number_types.h>
 
 #include <Eigen/LU>
@@ -29,29 +30,6 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
-
-// The power of two by which an adapter scales source and target coordinates alike when the largest
-// is far from 1: the kernels form products of up to 2n coordinates (volumes, squared cofactors),
-// which overflow or underflow past about 1e50 in 3D. A common factor changes no Jacobian and no
-// orientation, and a power of two is exact, so results are those of the unscaled map to the bit.
-inline double coordinate_scale(double largest)
-{
-  return largest > 0x1p-60 && largest < 0x1p60 ? 1. : unit_scale(largest);
-}
-
-// The same for a map, from the largest source and target coordinates: when either is far from 1,
-// the power of two that brings their geometric mean to 1. A source 2^-200 times the size of its
-// target then lies at 2^-100 and the target at 2^100: unscaled, the source's rest volumes (2^-600
-// in 3D) had squares that underflow, in the norms of gradients, and a scale-invariant measure
-// optimized to another energy than on the unscaled map.
-inline double coordinate_scale(double source_largest, double target_largest)
-{
-  const auto near_one = [](double x) { return x > 0x1p-60 && x < 0x1p60; };
-  if(near_one(source_largest) && near_one(target_largest)) return 1.;
-  if(!(source_largest > 0)) source_largest = target_largest;
-  if(!(target_largest > 0)) target_largest = source_largest;
-  return unit_scale(std::sqrt(source_largest) * std::sqrt(target_largest));
-}
 
 // The largest extent of the bounding box of `points` (0 for none).
 template <class Point>

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The package's sparse direct solver for symmetric positive definite systems: the triangle maps'
-// Newton systems (global_step.h), their harmonic starts (laplacian_system.h) and Tutte's
-// embedding (tutte_embedding.h). With CHOLMOD (SuiteSparse; the CMake target
+// Newton systems (global_step/lagged_factorization.h), their harmonic starts
+// (laplacian_system.h) and Tutte's embedding (tutte_embedding.h). With CHOLMOD (SuiteSparse; the CMake target
 // Distortion_optimization::CHOLMOD_support defines CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD)
 // a supernodal Cholesky factorization, whose dense blocks go through the BLAS: several times
 // faster than a simplicial one from some ten thousand unknowns on (Chen, Davis, Hager and

@@ -91,18 +91,10 @@ public:
       vertex_of.push_back(v);
       on_boundary.push_back(CGAL::is_border(v, tm) ? 1 : 0);
     }
-    double source_largest = 0, target_largest = 0;
-    for(std::size_t i = 0; i < source.size(); ++i) {
-      source_largest = std::max(source_largest, source[i].cwiseAbs().maxCoeff());
-      target_largest = std::max(target_largest, target_of_vertex[i].cwiseAbs().maxCoeff());
-    }
-    scale = coordinate_scale(source_largest, target_largest);
+    scale = coordinate_scale(source, target_of_vertex);
     check_comparable_sizes<2>(largest_extent(source), largest_extent(target_of_vertex));
-    if(scale != 1)
-      for(std::size_t i = 0; i < source.size(); ++i) {
-        source[i] *= scale;
-        target_of_vertex[i] *= scale;
-      }
+    scale_exactly(source, scale);
+    scale_exactly(target_of_vertex, scale);
     for(face_descriptor f : faces(tm)) {
       const std::size_t c = cell_of.size();
       if(degree(f, tm) != 3)
