@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The tests' Mesh_3 meshes (test_mesh_3.h), compiled once.
+// The tests' Mesh_3 meshes of implicit domains (test_mesh_3.h), compiled once; those of polyhedral
+// surfaces are in mesh_polyhedral.cpp.
 
 #include "test_mesh_3.h"
 
@@ -17,13 +18,4 @@ C3t3 mesh_implicit(double (*f)(const Point_3&), double radius, double size)
                                            params::facet_distance = size / 10, params::cell_radius_edge_ratio = 3,
                                            params::cell_size = size);
   return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
-}
-
-Polyhedral_c3t3 mesh_polyhedral(const Surface_mesh_3& surface)
-{
-  namespace params = CGAL::parameters;
-  const Polyhedral_domain domain(surface);
-  const CGAL::Mesh_criteria_3<Polyhedral_tr> criteria(params::facet_distance = 0.05, params::cell_radius_edge_ratio = 3,
-                                                      params::cell_size = 0.25);
-  return CGAL::make_mesh_3<Polyhedral_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
 }

@@ -38,7 +38,7 @@ using Target_map = boost::associative_property_map<Target_storage>;
 C3t3 mesh_implicit(double (*f)(const Point_3&), double radius, double size);
 
 // Complexes of another domain type: Mesh_3 on the polyhedral domain bounded by a closed surface
-// (facet distance 0.05, cell size 0.25, radius-edge ratio 3), compiled once as well.
+// (facet distance 0.05, cell size 0.25, radius-edge ratio 3), compiled once, in mesh_polyhedral.cpp.
 using Surface_mesh_3 = CGAL::Surface_mesh<Point_3>;
 using Polyhedral_domain = CGAL::Polyhedral_mesh_domain_3<Surface_mesh_3, K>;
 using Polyhedral_tr = CGAL::Mesh_triangulation_3<Polyhedral_domain>::type;
