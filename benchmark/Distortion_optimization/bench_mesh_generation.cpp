@@ -89,7 +89,7 @@ double mean_aspect(const Mesh& mesh, const Positions& positions)
   std::size_t count = 0;
   using Point = typename boost::property_traits<Positions>::value_type;
   constexpr int n = DO::internal::Is_c3t3<Mesh>::value ? 3 : 2;
-  DO::internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, n + 1>& p) {
+  DO::internal::for_each_cell_points(mesh, positions, [&](const auto&, const std::array<Point, n + 1>& p) {
     std::array<DO::internal::Vector<3>, n + 1> x;
     for(int i = 0; i <= n; ++i) x[i] = DO::internal::as_vector(p[i]);
     std::array<double, 6> angles;
