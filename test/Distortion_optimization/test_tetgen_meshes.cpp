@@ -184,7 +184,7 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   // (Tetrahedra with four vertices on the cube's surface near its edges can flatten: the radial
   // construction does not promise a valid map, only a start to repair.)
   Target_storage ball;
-  const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, 0.02, 0.03));
+  const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::parameters::center(Point_3(0.01, 0.02, 0.03)));
   EXPECT_EQ(flat, inverted(c3t3, ball));
   const auto boundary = boundary_vertices(c3t3);
   for(const auto& kv : ball) {

@@ -96,8 +96,8 @@ int run_tetrahedra(const Command_line& c)
     const K::Point_3 center = c.center.empty() ? DO::volume_centroid(c3t3) : K::Point_3(c.center[0], c.center[1], c.center[2]);
     // The messages in the tool's words: its options rather than the library's functions.
     try {
-      if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
-      else DO::radial_map(c3t3, target_map, center);
+      if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, DO::parameters::center(center));
+      else DO::radial_map(c3t3, target_map, DO::parameters::center(center));
     } catch(const DO::Center_outside_domain&) {
       throw DO::Invalid_input(c.center.empty() ? "the centroid of the volume is outside it (a volume in several parts, or one "
                                                  "curved around its centroid): give a --center inside"
