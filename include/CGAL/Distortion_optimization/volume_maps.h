@@ -272,22 +272,8 @@ vertices are on the boundary, on both sides of the edge, can come out flat or in
 is rounded onto the sphere). Their number is returned; `CGAL::minimize_distortion()` with
 `Distortion_optimization::parameters::untangle_first(true)` repairs them.
 
-\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
-\tparam TargetMap a model of `WritablePropertyMap` from `C3T3::Triangulation::Vertex_handle` to `Point_3`
-\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
-
-\param c3t3 the complex (not modified); only the cells in the complex count
-\param target receives the image of each vertex of the cells of the complex
-\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
-       ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{center}
-    \cgalParamDescription{the centre `c` of the map (`Distortion_optimization::parameters::center()`)}
-    \cgalParamType{`C3T3::Triangulation::Geom_traits::Point_3`, or a type it is constructible from such as `CGAL::Origin`}
-    \cgalParamDefault{`volume_centroid(c3t3)`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+The template parameters, the parameters and the named parameter `center` (the centre `c`,
+default `volume_centroid(c3t3)`) are those of `radial_map()`, see there.
 
 \returns the number of cells of the complex the map inverts or flattens (exact predicate)
 \throws Center_outside_domain (an `Invalid_input`) if the centre is not strictly inside the
