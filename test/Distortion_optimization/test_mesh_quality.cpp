@@ -140,14 +140,11 @@ TEST(MeshQuality, InvertedCellMapMarksTheTrianglesMeshQualityCounts)
 TEST(MeshQuality, CellMapsAgreeWithTheStatisticsOnRealMeshes)
 {
   const auto expect_same = [](const DO::Mesh_quality& a, const DO::Mesh_quality& b) {
-    EXPECT_EQ(a.cells, b.cells);
-    EXPECT_EQ(a.min_angle, b.min_angle);
-    EXPECT_EQ(a.max_angle, b.max_angle);
-    EXPECT_EQ(a.mean_min_angle, b.mean_min_angle);
-    EXPECT_EQ(a.min_radius_ratio, b.min_radius_ratio);
-    EXPECT_EQ(a.mean_radius_ratio, b.mean_radius_ratio);
-    EXPECT_EQ(a.slivers, b.slivers);
-    EXPECT_EQ(a.inverted_cells, b.inverted_cells);
+    const auto figures = [](const DO::Mesh_quality& q) {
+      return std::make_tuple(q.cells, q.min_angle, q.max_angle, q.mean_min_angle, q.min_radius_ratio, q.mean_radius_ratio,
+                             q.slivers, q.inverted_cells);
+    };
+    EXPECT_EQ(figures(a), figures(b));
   };
   // The smallest, the sum in the statistics' order, and the number marked.
   const auto summary = [](const auto& cells, const auto& ratio, const auto& inverted) {

@@ -228,12 +228,10 @@ to property maps, e.g. to draw a mesh's quality with `IO::write_SVG()`.
   \cgalParamNEnd
 
   \cgalParamNBegin{inverted_cell_map}
-    \cgalParamDescription{a property map that receives, for each cell, whether it is inverted (flat ones included):
-                          the cells counted in `Mesh_quality::inverted_cells`
-                          (`Distortion_optimization::parameters::inverted_cell_map()`)}
-    \cgalParamType{a class model of `WritablePropertyMap` with the cell key type and `bool` as value type}
+    \cgalParamDescription{as `cell_radius_ratio_map`, `true` for each cell counted in `Mesh_quality::inverted_cells` (flat
+                          ones included), `false` for the others (`Distortion_optimization::parameters::inverted_cell_map()`)}
+    \cgalParamType{the same, with `bool` as value type}
     \cgalParamDefault{unused}
-    \cgalParamExtra{Written only when the function returns normally.}
   \cgalParamNEnd
 
   \cgalParamNBegin{geom_traits}
