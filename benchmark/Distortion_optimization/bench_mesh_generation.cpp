@@ -286,27 +286,15 @@ void volume(int k)
     print(optimizers ? "Mesh_3 + ODT + perturb + exude" : "Mesh_3", soup.cells.size(), mean_aspect(meshed, Target_map(positions)),
           edge_aspect(soup.points, soup.cells), DO::mesh_quality(meshed, Target_map(positions)), seconds);
   }
-  std::vector<std::array<double, 3>> surface_points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for(auto u : target_boundary.vertices())
-    surface_points.push_back({target_boundary.point(u).x(), target_boundary.point(u).y(), target_boundary.point(u).z()});
-  for(auto f : target_boundary.faces()) {
-    std::array<std::size_t, 3> t;
-    int i = 0;
-    for(auto u : CGAL::vertices_around_face(target_boundary.halfedge(f), target_boundary)) t[i++] = std::size_t(u);
-    triangles.push_back(t);
-  }
   const double enclosed = DO::interior_mesh_sizes(target_boundary).volume;
   double max_volume = enclosed / wanted;
-  std::vector<std::array<double, 3>> tet_points;
-  std::vector<std::array<std::size_t, 4>> tet_cells;
-  for(int round = 0; round < 3; ++round) {
-    DO::tetrahedralize_with_tetgen(surface_points, triangles, max_volume, tet_points, tet_cells);
-    max_volume *= tet_cells.size() / wanted;
-  }
+  for(int round = 0; round < 3; ++round)
+    max_volume *= DO::tetrahedralize_with_tetgen(target_boundary, DOP::maximum_cell_volume(max_volume)).cells.size() / wanted;
   const auto start = std::chrono::steady_clock::now();
-  DO::tetrahedralize_with_tetgen(surface_points, triangles, max_volume, tet_points, tet_cells);
+  const DO::IO::Tetrahedron_soup tetrahedralized = DO::tetrahedralize_with_tetgen(target_boundary, DOP::maximum_cell_volume(max_volume));
   const double seconds = seconds_since(start);
+  const std::vector<std::array<double, 3>>& tet_points = tetrahedralized.points;
+  const std::vector<std::array<std::size_t, 4>>& tet_cells = tetrahedralized.cells;
   Volume tetgen;
   DO::c3t3_from_tetrahedra(tetgen, tet_points, tet_cells);
   Targets positions;
