@@ -89,7 +89,7 @@ double mean_aspect(const Mesh& mesh, const Positions& positions)
   std::size_t count = 0;
   using Point = typename boost::property_traits<Positions>::value_type;
   constexpr int n = DO::internal::Is_c3t3<Mesh>::value ? 3 : 2;
-  DO::internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, n + 1>& p) {
+  DO::internal::for_each_cell_points(mesh, positions, [&](const auto&, const std::array<Point, n + 1>& p) {
     std::array<DO::internal::Vector<3>, n + 1> x;
     for(int i = 0; i <= n; ++i) x[i] = DO::internal::as_vector(p[i]);
     std::array<double, 6> angles;
@@ -267,27 +267,15 @@ void volume(int k)
     print(optimizers ? "Mesh_3 + ODT + perturb + exude" : "Mesh_3", soup.cells.size(), mean_aspect(meshed, Target_map(positions)),
           edge_aspect(soup.points, soup.cells), DO::mesh_quality(meshed, Target_map(positions)), seconds);
   }
-  std::vector<std::array<double, 3>> surface_points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for(auto u : target_boundary.vertices())
-    surface_points.push_back({target_boundary.point(u).x(), target_boundary.point(u).y(), target_boundary.point(u).z()});
-  for(auto f : target_boundary.faces()) {
-    std::array<std::size_t, 3> t;
-    int i = 0;
-    for(auto u : CGAL::vertices_around_face(target_boundary.halfedge(f), target_boundary)) t[i++] = std::size_t(u);
-    triangles.push_back(t);
-  }
   const double enclosed = DO::interior_mesh_sizes(target_boundary).volume;
   double max_volume = enclosed / wanted;
-  std::vector<std::array<double, 3>> tet_points;
-  std::vector<std::array<std::size_t, 4>> tet_cells;
-  for(int round = 0; round < 3; ++round) {
-    DO::tetrahedralize_with_tetgen(surface_points, triangles, max_volume, tet_points, tet_cells);
-    max_volume *= tet_cells.size() / wanted;
-  }
+  for(int round = 0; round < 3; ++round)
+    max_volume *= DO::tetrahedralize_with_tetgen(target_boundary, DOP::maximum_cell_volume(max_volume)).cells.size() / wanted;
   const auto start = std::chrono::steady_clock::now();
-  DO::tetrahedralize_with_tetgen(surface_points, triangles, max_volume, tet_points, tet_cells);
+  const DO::IO::Tetrahedron_soup tetrahedralized = DO::tetrahedralize_with_tetgen(target_boundary, DOP::maximum_cell_volume(max_volume));
   const double seconds = seconds_since(start);
+  const std::vector<std::array<double, 3>>& tet_points = tetrahedralized.points;
+  const std::vector<std::array<std::size_t, 4>>& tet_cells = tetrahedralized.cells;
   Volume tetgen;
   DO::c3t3_from_tetrahedra(tetgen, tet_points, tet_cells);
   Targets positions;

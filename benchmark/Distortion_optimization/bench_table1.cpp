@@ -16,6 +16,7 @@
 #include <CGAL/minimize_distortion.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
@@ -52,11 +53,15 @@ void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
 void cube(double max_volume, std::vector<std::array<double, 3>>& points, std::vector<std::array<std::size_t, 4>>& tets)
 {
-  std::vector<std::array<double, 3>> corners;
-  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
+  using Surface = CGAL::Surface_mesh<K::Point_3>;
+  Surface cube;
+  for(int i = 0; i < 8; ++i) cube.add_vertex(K::Point_3(i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.));
   const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                                                          {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  DO::tetrahedralize_with_tetgen(corners, faces, max_volume, points, tets);
+  for(const auto& f : faces) cube.add_face(Surface::Vertex_index(f[0]), Surface::Vertex_index(f[1]), Surface::Vertex_index(f[2]));
+  DO::IO::Tetrahedron_soup soup = DO::tetrahedralize_with_tetgen(cube, DO::parameters::maximum_cell_volume(max_volume));
+  points = std::move(soup.points);
+  tets = std::move(soup.cells);
 }
 
 // A cube of about `count` tetrahedra: TetGen's count for a volume bound is roughly proportional to

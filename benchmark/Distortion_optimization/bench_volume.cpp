@@ -135,7 +135,7 @@ void run(const Volume& volume, const Measure& measure, DO::Global_solver solver,
 {
   auto start = std::chrono::steady_clock::now();
   Targets map;
-  row.flat = DO::star_shaped_to_unit_ball(volume, Target_map(map), DO::volume_centroid(volume));
+  row.flat = DO::star_shaped_to_unit_ball(volume, Target_map(map));
   row.start.push_back(seconds_since(start));
   if(!row.error.empty()) return;
   try {
@@ -214,7 +214,7 @@ int main(int argc, char** argv)
         }
     // The gyroid under the ball map itself (the paper's Fig. 14, left).
     Targets ball;
-    DO::star_shaped_to_unit_ball(cube_volume, Target_map(ball), DO::volume_centroid(cube_volume));
+    DO::star_shaped_to_unit_ball(cube_volume, Target_map(ball));
     Surface carried;
     DO::carry_surface(gyroid, embedding, Target_map(ball), carried);
     const auto start_c = CGAL::compute_distortion(gyroid, carried.points(), DO::Isometric_dilatation());

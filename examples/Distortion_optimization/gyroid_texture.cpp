@@ -59,7 +59,7 @@ int main(int argc, char* argv[])
     const auto embedding = DO::embed_surface_in_volume(volume, gyroid);
 
     Targets ball;
-    const std::size_t flat = DO::star_shaped_to_unit_ball(volume, Target_map(ball), CGAL::ORIGIN);
+    const std::size_t flat = DO::star_shaped_to_unit_ball(volume, Target_map(ball), DO::parameters::center(CGAL::ORIGIN));
     Surface start;
     DO::carry_surface(gyroid, embedding, Target_map(ball), start);
 

@@ -58,7 +58,7 @@ int main(int argc, char* argv[])
 
     // Throws if the volume is not star-shaped about its centroid; returns how many cells it flattens.
     Targets ball;
-    const std::size_t flat = DO::star_shaped_to_unit_ball(volume, Target_map(ball), DO::volume_centroid(volume));
+    const std::size_t flat = DO::star_shaped_to_unit_ball(volume, Target_map(ball));
 
     // No vertex is fixed: the boundary slides on the unit sphere and the inside follows.
     const DO::Symmetric_dirichlet measure;

@@ -3,10 +3,13 @@
 
 #include "test_complexes.h"
 
+#include <CGAL/Distortion_optimization/IO/medit.h>
+#include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/mesh_quality.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
 
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/property_map/function_property_map.hpp>
@@ -15,6 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+#include <tuple>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -24,6 +30,7 @@ namespace DO = CGAL::Distortion_optimization;
 using namespace test_complexes;
 using Point_2 = K::Point_2;
 using Mesh2 = CGAL::Surface_mesh<Point_2>;
+using Cell_handle = Tr::Cell_handle;
 
 // The triangular lattice of unit edges on (k + 1) rows of k + 1 points, every other row shifted
 // by one half: equilateral triangles, counterclockwise.
@@ -101,23 +108,108 @@ TEST(MeshQuality, StatisticsOfKnownShapes)
   EXPECT_EQ(q.inverted_cells, 0u);
 }
 
-TEST(MeshQuality, InvertedTrianglesOfASoupAreThoseMeshQualityCounts)
+TEST(MeshQuality, InvertedCellMapMarksTheTrianglesMeshQualityCounts)
 {
-  // Two clockwise triangles (the soup's orientation), one counterclockwise, one flat; then the
+  // Two clockwise triangles (the mesh's orientation), one counterclockwise, one flat; then the
   // counterclockwise one enlarged until it outweighs the others, so that the other three count.
-  std::vector<std::array<double, 3>> points = {{0, 0, 0}, {0, 1, 7}, {1, 0, 0}, {3, 0, 0}, {3, 2, 0}, {5, 0, 0},
-                                               {6, 0, 0}, {7, 0, 0}, {8, 0, 0}, {9, 0, 0}, {9, 1, 0}, {10, 0, 0}};
+  std::vector<Point_2> points = {{0, 0}, {0, 1}, {1, 0}, {3, 0}, {3, 2}, {5, 0}, {6, 0}, {7, 0}, {8, 0}, {9, 0}, {9, 1}, {10, 0}};
   const std::vector<std::array<std::size_t, 3>> cells = {{0, 1, 2}, {3, 4, 5}, {9, 11, 10}, {6, 7, 8}};
-  EXPECT_EQ(DO::inverted_triangles(points, cells), std::vector<bool>({false, false, true, true}));
   Mesh2 m;
-  for(const auto& c : cells) {
-    const auto at = [&](std::size_t v) { return m.add_vertex(Point_2(points[v][0], points[v][1])); };
-    m.add_face(at(c[0]), at(c[1]), at(c[2]));
-  }
-  EXPECT_EQ(DO::mesh_quality(m, m.points()).inverted_cells, 2u);
-  points[10] = {9, 6, 0};
-  points[11] = {15, 0, 0};
-  EXPECT_EQ(DO::inverted_triangles(points, cells), std::vector<bool>({true, true, false, true}));
+  for(const auto& p : points) m.add_vertex(p);
+  for(const auto& c : cells) m.add_face(Mesh2::Vertex_index(c[0]), Mesh2::Vertex_index(c[1]), Mesh2::Vertex_index(c[2]));
+  auto inverted = m.add_property_map<Mesh2::Face_index, bool>("f:inverted", false).first;
+  const auto marked = [&] {
+    std::vector<bool> v;
+    for(auto f : m.faces()) v.push_back(inverted[f]);
+    return v;
+  };
+  EXPECT_EQ(DO::mesh_quality(m, m.points(), DO::parameters::inverted_cell_map(inverted)).inverted_cells, 2u);
+  EXPECT_EQ(marked(), std::vector<bool>({false, false, true, true}));
+  m.point(Mesh2::Vertex_index(10)) = Point_2(9, 6);
+  m.point(Mesh2::Vertex_index(11)) = Point_2(15, 0);
+  EXPECT_EQ(DO::mesh_quality(m, m.points(), DO::parameters::inverted_cell_map(inverted)).inverted_cells, 3u);
+  EXPECT_EQ(marked(), std::vector<bool>({true, true, false, true}));
+  // The kernel's predicates by name give the same answer.
+  EXPECT_EQ(DO::mesh_quality(m, m.points(), CGAL::parameters::geom_traits(K())).inverted_cells, 3u);
+}
+
+// The per-cell maps on real meshes: lion-head's Tutte map (a disk of 16.6K triangles) with some
+// vertices thrown about until triangles fold, and CGAL's sphere.mesh with perturbed positions.
+// The radius ratios written are those whose smallest and mean the statistics report, the cells
+// marked inverted those they count; asking for the maps changes no statistic.
+TEST(MeshQuality, CellMapsAgreeWithTheStatisticsOnRealMeshes)
+{
+  const auto expect_same = [](const DO::Mesh_quality& a, const DO::Mesh_quality& b) {
+    const auto figures = [](const DO::Mesh_quality& q) {
+      return std::make_tuple(q.cells, q.min_angle, q.max_angle, q.mean_min_angle, q.min_radius_ratio, q.mean_radius_ratio,
+                             q.slivers, q.inverted_cells);
+    };
+    EXPECT_EQ(figures(a), figures(b));
+  };
+  // The smallest, the sum in the statistics' order, and the number marked.
+  const auto summary = [](const auto& cells, const auto& ratio, const auto& inverted) {
+    double smallest = 1, sum = 0;
+    std::size_t marked = 0;
+    for(const auto& c : cells) {
+      smallest = std::min(smallest, ratio(c));
+      sum += ratio(c);
+      marked += inverted(c);
+    }
+    return std::make_tuple(smallest, sum, marked);
+  };
+
+  using Surface = CGAL::Surface_mesh<Point_3>;
+  Surface lion;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", lion));
+  auto uv = lion.add_property_map<Surface::Vertex_index, Point_2>("v:uv").first;
+  DO::initial_parameterization(lion, uv);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.01, 0.01);
+  for(auto v : lion.vertices())
+    if(!lion.is_border(v) && std::size_t(v) % 7 == 0) uv[v] = Point_2(uv[v].x() + u(rng), uv[v].y() + u(rng));
+  auto ratio = lion.add_property_map<Surface::Face_index, double>("f:ratio", -1.).first;
+  auto inverted = lion.add_property_map<Surface::Face_index, bool>("f:inverted", false).first;
+  const DO::Mesh_quality q2 =
+    DO::mesh_quality(lion, uv, DO::parameters::cell_radius_ratio_map(ratio, DO::parameters::inverted_cell_map(inverted)));
+  expect_same(q2, DO::mesh_quality(lion, uv));
+  ASSERT_EQ(q2.cells, lion.number_of_faces());
+  EXPECT_GT(q2.inverted_cells, 10u);
+  EXPECT_LT(q2.inverted_cells, q2.cells / 2);
+  const auto [smallest2, sum2, marked2] =
+    summary(lion.faces(), [&](Surface::Face_index f) { return ratio[f]; }, [&](Surface::Face_index f) { return inverted[f]; });
+  EXPECT_EQ(smallest2, q2.min_radius_ratio);
+  EXPECT_EQ(sum2 / q2.cells, q2.mean_radius_ratio);
+  EXPECT_EQ(marked2, q2.inverted_cells);
+  for(auto f : lion.faces()) EXPECT_TRUE(ratio[f] >= 0 && ratio[f] <= 1 + 1e-12) << f;
+
+  const DO::IO::Tetrahedron_soup sphere = DO::IO::read_tetrahedron_soup(DISTORTION_OPTIMIZATION_DATA_DIR "/sphere.mesh");
+  C3t3 c3t3;
+  DO::c3t3_from_tetrahedra(c3t3, sphere.points, sphere.cells);
+  Target_storage positions;
+  DO::map_vertices(c3t3, Target_map(positions), [](const Point_3& p) { return p; });
+  std::uniform_real_distribution<double> w(-0.03, 0.03);
+  for(auto& [v, p] : positions) p = Point_3(p.x() + w(rng), p.y() + w(rng), p.z() + w(rng));
+  std::unordered_map<Cell_handle, double> cell_ratio;
+  std::unordered_map<Cell_handle, bool> cell_inverted;
+  const DO::Mesh_quality q3 = DO::mesh_quality(c3t3, Target_map(positions),
+    DO::parameters::inverted_cell_map(boost::make_assoc_property_map(cell_inverted),
+      DO::parameters::cell_radius_ratio_map(boost::make_assoc_property_map(cell_ratio))));
+  expect_same(q3, DO::mesh_quality(c3t3, Target_map(positions)));
+  ASSERT_EQ(q3.cells, 3586u);
+  EXPECT_EQ(cell_ratio.size(), q3.cells);
+  EXPECT_EQ(cell_inverted.size(), q3.cells);
+  EXPECT_GT(q3.inverted_cells, 0u);
+  std::vector<Cell_handle> cells;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) cells.push_back(Cell_handle(c));
+  const auto [smallest3, sum3, marked3] =
+    summary(cells, [&](Cell_handle c) { return cell_ratio.at(c); }, [&](Cell_handle c) { return cell_inverted.at(c); });
+  EXPECT_EQ(smallest3, q3.min_radius_ratio);
+  EXPECT_EQ(sum3 / q3.cells, q3.mean_radius_ratio);
+  EXPECT_EQ(marked3, q3.inverted_cells);
+  // A cell is inverted exactly where its positions are not positively oriented.
+  for(Cell_handle c : cells)
+    EXPECT_EQ(cell_inverted.at(c), CGAL::orientation(positions.at(c->vertex(0)), positions.at(c->vertex(1)),
+                                                     positions.at(c->vertex(2)), positions.at(c->vertex(3))) != CGAL::POSITIVE);
 }
 
 TEST(MeshQuality, PerturbedEquilateralGridReturnsToTheGrid)
@@ -198,6 +290,10 @@ TEST(MeshQuality, PerturbedCubeGridImprovesWithTheBoundaryFixedOrSliding)
     EXPECT_EQ(sharp.count(v), std::size_t(on_sharp_edge(v)));
     on_edges += on_sharp_edge(v);
   }
+  // The cube's faces meet at 90 degrees (each face flat): the same vertices with a threshold of
+  // 89 degrees, none with 91.
+  EXPECT_EQ(DO::sharp_boundary_vertices(c3t3, Target_map(start), DO::parameters::sharp_edge_angle(89.)), sharp);
+  EXPECT_TRUE(DO::sharp_boundary_vertices(c3t3, Target_map(start), DO::parameters::sharp_edge_angle(91.)).empty());
   EXPECT_EQ(on_edges, 8u + 12u * 4u);   // corners, and 4 inner points on each of the 12 edges
   const auto slide = DO::improve_mesh_quality(c3t3, Target_map(sliding), DO::Conformal_dilatation(),
     DO::parameters::sliding_boundary(DO::Triangle_surface::from_complex_boundary(c3t3, Target_map(start)),

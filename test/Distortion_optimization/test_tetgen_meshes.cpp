@@ -16,6 +16,7 @@
 #include <CGAL/minimize_distortion.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/intersections.h>
 
 #include <boost/property_map/function_property_map.hpp>
@@ -33,15 +34,26 @@
 #include <unordered_set>
 #include <vector>
 
+using Surface = CGAL::Surface_mesh<K::Point_3>;
+
+// The boundary of the cube [-1, 1]^3: vertex i at (+-1, +-1, +-1) by the bits of i, 12 triangles.
+static Surface cube_surface()
+{
+  Surface cube;
+  for(int i = 0; i < 8; ++i) cube.add_vertex(K::Point_3(i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.));
+  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  for(const auto& f : faces) cube.add_face(Surface::Vertex_index(f[0]), Surface::Vertex_index(f[1]), Surface::Vertex_index(f[2]));
+  return cube;
+}
+
 // The cube [-1, 1]^3, given to TetGen as a closed triangle surface, with a tet volume bound.
 static void tetgen_cube(double max_volume, std::vector<std::array<double, 3>>& points,
                         std::vector<std::array<std::size_t, 4>>& tets)
 {
-  std::vector<std::array<double, 3>> corners;
-  for(int i = 0; i < 8; ++i) corners.push_back({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
-  const std::vector<std::array<std::size_t, 3>> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                                                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  DO::tetrahedralize_with_tetgen(corners, faces, max_volume, points, tets);
+  DO::IO::Tetrahedron_soup soup = DO::tetrahedralize_with_tetgen(cube_surface(), DO::parameters::maximum_cell_volume(max_volume));
+  points = std::move(soup.points);
+  tets = std::move(soup.cells);
 }
 
 static C3t3 tetgen_cube_complex(double max_volume)
@@ -52,6 +64,48 @@ static C3t3 tetgen_cube_complex(double max_volume)
   C3t3 c3t3;
   DO::c3t3_from_tetrahedra(c3t3, points, tets);
   return c3t3;
+}
+
+// tetrahedralize_with_tetgen() takes its bounds and maps by name: without a volume bound the
+// tetrahedra are fewer; with one none is larger; a looser radius-edge bound is accepted; the
+// surface's vertices come first, at their index (here numbered backwards) and where the point
+// map puts them (here twice as far).
+TEST(TetrahedralMeshes, TetgenTakesItsBoundsAndMapsByName)
+{
+  const Surface cube = cube_surface();
+  const auto volume = [](const DO::IO::Tetrahedron_soup& s, const std::array<std::size_t, 4>& t) {
+    const auto p = [&](int i) { return Point_3(s.points[t[i]][0], s.points[t[i]][1], s.points[t[i]][2]); };
+    return CGAL::volume(p(0), p(1), p(2), p(3));
+  };
+  const DO::IO::Tetrahedron_soup bounded = DO::tetrahedralize_with_tetgen(cube, DO::parameters::maximum_cell_volume(0.05));
+  const DO::IO::Tetrahedron_soup unbounded = DO::tetrahedralize_with_tetgen(cube);
+  const DO::IO::Tetrahedron_soup loose =
+    DO::tetrahedralize_with_tetgen(cube, DO::parameters::maximum_cell_volume(0.05, DO::parameters::cell_radius_edge_ratio(2.)));
+  EXPECT_LT(unbounded.cells.size(), bounded.cells.size());
+  for(const auto* s : {&bounded, &unbounded, &loose}) {
+    double total = 0;
+    for(const auto& t : s->cells) {
+      EXPECT_GT(volume(*s, t), 0);
+      if(s != &unbounded) EXPECT_LE(volume(*s, t), 0.05);
+      total += volume(*s, t);
+    }
+    EXPECT_NEAR(total, 8, 1e-9);
+  }
+  const auto backwards = boost::make_function_property_map<Surface::Vertex_index>([](Surface::Vertex_index v) { return 7 - std::size_t(v); });
+  const auto doubled = boost::make_function_property_map<Surface::Vertex_index>([&](Surface::Vertex_index v) {
+    const K::Point_3& p = cube.point(v);
+    return K::Point_3(2 * p.x(), 2 * p.y(), 2 * p.z());
+  });
+  const DO::IO::Tetrahedron_soup mapped = DO::tetrahedralize_with_tetgen(
+    cube, DO::parameters::maximum_cell_volume(0.4, CGAL::parameters::vertex_index_map(backwards).vertex_point_map(doubled)));
+  ASSERT_GE(mapped.points.size(), 8u);
+  for(Surface::Vertex_index v : cube.vertices()) {
+    const K::Point_3& p = cube.point(v);
+    EXPECT_EQ(mapped.points[7 - std::size_t(v)], (std::array<double, 3>{2 * p.x(), 2 * p.y(), 2 * p.z()}));
+  }
+  double total = 0;
+  for(const auto& t : mapped.cells) total += volume(mapped, t);
+  EXPECT_NEAR(total, 64, 1e-9);
 }
 
 // TetGen's own writer (tetgenio::save_nodes, save_elements: 1-based, as the tetgen program
@@ -184,7 +238,7 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   // (Tetrahedra with four vertices on the cube's surface near its edges can flatten: the radial
   // construction does not promise a valid map, only a start to repair.)
   Target_storage ball;
-  const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, 0.02, 0.03));
+  const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::parameters::center(Point_3(0.01, 0.02, 0.03)));
   EXPECT_EQ(flat, inverted(c3t3, ball));
   const auto boundary = boundary_vertices(c3t3);
   for(const auto& kv : ball) {

@@ -6,6 +6,7 @@
 #include "test_complexes.h"
 #include "test_mesh_3.h"
 
+#include <CGAL/Distortion_optimization/IO/medit.h>
 #include <CGAL/Distortion_optimization/c3t3_from_tetrahedra.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/volume_maps.h>
@@ -82,7 +83,7 @@ TEST(TetrahedralMeshes, StarShapedBallAndHarmonicStartsAreValidAndImprove)
   // A Mesh_3 ball (a polyhedral approximation of the unit ball) onto the exact unit ball.
   const C3t3 c3t3 = mesh_sphere(0.25);
   Target_storage ball;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0.01, -0.02, 0.03));
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::parameters::center(Point_3(0.01, -0.02, 0.03)));
   EXPECT_EQ(inverted(c3t3, ball), 0u);
   for(Vertex_handle v : boundary_vertices(c3t3)) {
     const Point_3& q = ball.at(v);
@@ -321,7 +322,7 @@ TEST(TetrahedralMeshes, BadInput)
 static Target_storage onto_unit_ball(const C3t3& c3t3)
 {
   Target_storage start;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), CGAL::ORIGIN);
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(start), DO::parameters::center(CGAL::ORIGIN));
   EXPECT_EQ(inverted(c3t3, start), 0u);
   return start;
 }
@@ -526,7 +527,7 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
   const C3t3 c3t3 = mesh_implicit(+torus, 2., 0.2);
   Target_storage ball;
   try {
-    DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(1, 0, 0));
+    DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::parameters::center(Point_3(1, 0, 0)));
     ADD_FAILURE() << "a torus was mapped onto the ball";
   } catch(const DO::Domain_not_star_shaped& e) {
     EXPECT_NE(std::string(e.what()).find("not star-shaped about the centre: the boundary facet of cell"), std::string::npos)
@@ -535,7 +536,7 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
   EXPECT_TRUE(ball.empty());
   // The centre of the hole is outside the domain.
   try {
-    DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), Point_3(0, 0, 0));
+    DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::parameters::center(Point_3(0, 0, 0)));
     ADD_FAILURE() << "a centre outside the domain was accepted";
   } catch(const DO::Center_outside_domain& e) {
     EXPECT_NE(std::string(e.what()).find("not strictly inside"), std::string::npos) << e.what();
@@ -545,7 +546,7 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
   const C3t3 sphere = mesh_sphere(0.4);
   Target_storage radial_start;
   // About a point outside the sphere the radial map is refused, its target untouched.
-  EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), Point_3(2, 0, 0)), DO::Center_outside_domain);
+  EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), DO::parameters::center(Point_3(2, 0, 0))), DO::Center_outside_domain);
   EXPECT_TRUE(radial_start.empty());
   // Nor on its boundary: at a boundary vertex (in cells whose facets through it may all be inner
   // ones), or at the midpoint of a boundary edge (where the rounded midpoint is on it).
@@ -554,16 +555,65 @@ TEST(TetrahedralMeshes, BallMapRefusesADomainThatIsNotStarShaped)
     for(int i = 0; i < 4 && tried < 20; ++i)
       if(!sphere.is_in_complex(c->neighbor(i))) {
         const Point_3 a = c->vertex((i + 1) % 4)->point().point(), b = c->vertex((i + 2) % 4)->point().point();
-        EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), a), DO::Center_outside_domain) << a;
+        EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), DO::parameters::center(a)), DO::Center_outside_domain) << a;
         const Point_3 mid((a.x() + b.x()) / 2, (a.y() + b.y()) / 2, (a.z() + b.z()) / 2);
         if(CGAL::collinear(a, b, mid)) {
-          EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), mid), DO::Center_outside_domain) << mid;
+          EXPECT_THROW(DO::radial_map(sphere, Target_map(radial_start), DO::parameters::center(mid)), DO::Center_outside_domain) << mid;
         }
         ++tried;
       }
   EXPECT_EQ(tried, 20u);
   EXPECT_TRUE(radial_start.empty());
-  DO::radial_map(sphere, Target_map(radial_start), Point_3(0, 0, 0));
+  DO::radial_map(sphere, Target_map(radial_start), DO::parameters::center(Point_3(0, 0, 0)));
   for(const auto& [v, q] : radial_start)
     EXPECT_EQ(q, radial(v->point().point()));
+}
+
+// The start maps take their centre by name: without it, the volume centroid (the same map, bit
+// for bit, as with the centroid given); about another point inside, the map of that point (the
+// radial map is (p - c) |p - c| exactly; the ball map moves every vertex and still puts the
+// boundary on the unit sphere, the rest inside); CGAL::ORIGIN is a centre. On CGAL's sphere.mesh.
+TEST(TetrahedralMeshes, StartMapsTakeTheirCentreByName)
+{
+  const DO::IO::Tetrahedron_soup soup = DO::IO::read_tetrahedron_soup(DISTORTION_OPTIMIZATION_DATA_DIR "/sphere.mesh");
+  C3t3 c3t3;
+  DO::c3t3_from_tetrahedra(c3t3, soup.points, soup.cells);
+  const Point_3 g = DO::volume_centroid(c3t3), off = g + K::Vector_3(0.15, -0.05, 0.1);
+  const auto boundary = boundary_vertices(c3t3);
+
+  Target_storage by_default, at_centroid, about_off, at_origin, about_zero;
+  const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, Target_map(by_default));
+  EXPECT_EQ(DO::star_shaped_to_unit_ball(c3t3, Target_map(at_centroid), DO::parameters::center(g)), flat);
+  EXPECT_EQ(by_default, at_centroid);
+  ASSERT_EQ(by_default.size(), 757u);
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(about_off), DO::parameters::center(off));
+  ASSERT_EQ(about_off.size(), by_default.size());
+  const auto norm = [](const Point_3& q) { return std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z())); };
+  std::size_t moved = 0;
+  for(const auto& [v, q] : about_off) {
+    moved += q != by_default.at(v);
+    EXPECT_LE(norm(q), 1 + 1e-12);
+    if(boundary.count(v)) EXPECT_NEAR(norm(q), 1, 1e-12);
+  }
+  EXPECT_EQ(moved, about_off.size());
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(at_origin), DO::parameters::center(CGAL::ORIGIN));
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(about_zero), DO::parameters::center(Point_3(0, 0, 0)));
+  EXPECT_EQ(at_origin, about_zero);
+
+  Target_storage radial_default, radial_centroid, radial_off;
+  DO::radial_map(c3t3, Target_map(radial_default));
+  DO::radial_map(c3t3, Target_map(radial_centroid), DO::parameters::center(g));
+  EXPECT_EQ(radial_default, radial_centroid);
+  DO::radial_map(c3t3, Target_map(radial_off), DO::parameters::center(off));
+  ASSERT_EQ(radial_off.size(), 757u);
+  for(const auto& [v, q] : radial_off) {
+    const K::Vector_3 u = v->point().point() - off;
+    const double r = std::sqrt(u.squared_length());
+    EXPECT_EQ(q, Point_3(r * u.x(), r * u.y(), r * u.z()));
+    EXPECT_NE(q, radial_default.at(v));
+  }
+  // A centre outside the domain is refused whichever map takes it.
+  EXPECT_THROW(DO::radial_map(c3t3, Target_map(radial_off), DO::parameters::center(Point_3(3, 0, 0))), DO::Center_outside_domain);
+  EXPECT_THROW(DO::star_shaped_to_unit_ball(c3t3, Target_map(about_off), DO::parameters::center(Point_3(3, 0, 0))),
+               DO::Center_outside_domain);
 }

@@ -4,6 +4,7 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Distortion_optimization/global_injectivity.h>
 #include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/untangle.h>
 #include <CGAL/minimize_distortion.h>
@@ -13,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <boost/property_map/function_property_map.hpp>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -282,4 +284,35 @@ TEST(Untangle, ABorderFixedOnAConvexPolygonIsUntangledFromTutteEmbeddingThere)
         EXPECT_EQ(uv[v], tutte[v.idx()]);
       }
   }
+}
+
+// is_boundary_embedded() on lion-head's Tutte map, whose border is a circle: embedded; with one
+// border vertex pulled across the disk, its border crosses itself. A vertex index map given by
+// name (here the vertices numbered backwards) gives the same answers.
+TEST(Untangle, BoundaryEmbeddingOfLionHeadsTutteMapWithAnyVertexIndices)
+{
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(DISTORTION_OPTIMIZATION_DATA_DIR) + "/lion-head.off", mesh));
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  DO::initial_parameterization(mesh, uv);
+  const std::size_t n = mesh.number_of_vertices();
+  const auto backwards = boost::make_function_property_map<Mesh3::Vertex_index>(
+    [n](Mesh3::Vertex_index v) { return n - 1 - std::size_t(v.idx()); });
+  EXPECT_TRUE(DO::is_boundary_embedded(mesh, uv));
+  EXPECT_TRUE(DO::is_boundary_embedded(mesh, uv, CGAL::parameters::vertex_index_map(backwards)));
+  // One border vertex taken through the centre of the circle to beyond its other side.
+  Mesh3::Vertex_index border;
+  double x = 0, y = 0, count = 0;
+  for(auto v : mesh.vertices())
+    if(mesh.is_border(v)) {
+      border = v;
+      x += uv[v].x();
+      y += uv[v].y();
+      ++count;
+    }
+  ASSERT_GT(count, 2);
+  const Point_2 centre(x / count, y / count);
+  uv[border] = centre + 2 * (centre - uv[border]);
+  EXPECT_FALSE(DO::is_boundary_embedded(mesh, uv));
+  EXPECT_FALSE(DO::is_boundary_embedded(mesh, uv, CGAL::parameters::vertex_index_map(backwards)));
 }

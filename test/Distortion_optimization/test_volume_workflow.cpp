@@ -594,7 +594,7 @@ TEST(VolumeWorkflow, FlatCapsArePeeledSoThatTheRadialMapKeepsTheBoundaryCells)
   const DO::Interior_mesh_sizes sizes = DO::interior_mesh_sizes(blobby);
   const auto boundary = test_complexes::boundary_vertices(c3t3);
   Targets radial;
-  DO::radial_map(c3t3, Target_map(radial), DO::volume_centroid(c3t3));
+  DO::radial_map(c3t3, Target_map(radial));
   std::size_t on_surface = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     bool all_on_surface = true;
@@ -759,7 +759,7 @@ TEST(VolumeWorkflow, StarShapedToBallThenOptimizedKeepsEveryCell)
     const C3t3 c3t3 = DO::mesh_interior(surface, DOP::cell_size(h, DOP::exude_slivers(name == "ellipsoid.off")));
     ASSERT_EQ(non_positive_cells(c3t3), 0u);
     Targets ball;
-    EXPECT_EQ(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)), 0u) << name;
+    EXPECT_EQ(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball)), 0u) << name;
     EXPECT_EQ(inverted(c3t3, ball), 0u) << name;
     EXPECT_EQ(CGAL::compute_distortion(c3t3, Target_map(ball), DO::Conformal_dilatation()).inverted_cells, 0u);
     const DO::Result r = CGAL::minimize_distortion(c3t3, Target_map(ball), DO::Conformal_dilatation(),
@@ -782,7 +782,7 @@ void expect_enlarging_ball_map_converges(const Surface& blobby, double cell_size
   const C3t3 c3t3 = DO::mesh_interior(blobby, DOP::cell_size(cell_size));
   ASSERT_GT(c3t3.number_of_cells_in_complex(), cells);
   Targets ball;
-  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3));
+  DO::star_shaped_to_unit_ball(c3t3, Target_map(ball));
   const DO::Result r = CGAL::minimize_distortion(c3t3, Target_map(ball), measure,
                                                  DOP::sliding_boundary(DO::Sphere_surface(), DOP::untangle_first(true)));
   EXPECT_GT(r.inverted_start_cells, 0u);
@@ -809,7 +809,7 @@ TEST(VolumeWorkflow, StartMapsAreTheSameAtAnyScale)
     const Point center = DO::volume_centroid(c3t3);
     Targets target;
     // A few cells of four boundary vertices come out flat (documented): as many at every scale.
-    const std::size_t inverted = DO::star_shaped_to_unit_ball(c3t3, Target_map(target), center);
+    const std::size_t inverted = DO::star_shaped_to_unit_ball(c3t3, Target_map(target), DO::parameters::center(center));
     std::vector<Point> ball;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
       for(int i = 0; i < 4; ++i) ball.push_back(target.at(c->vertex(i)));
@@ -838,7 +838,7 @@ TEST(VolumeWorkflow, UntangledBallMapIsTheSameAtAnyScale)
     const double source_factor = std::ldexp(1., a), target_factor = std::ldexp(1., b);
     const C3t3 c3t3 = DO::mesh_interior(scaled_surface(cube, source_factor));
     Targets ball;
-    ASSERT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)), 0u);
+    ASSERT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball)), 0u);
     for(auto& [v, p] : ball) p = Point(p.x() * target_factor, p.y() * target_factor, p.z() * target_factor);
     const DO::Untangle_result r = DO::untangle(c3t3, Target_map(ball),
                                                DOP::sliding_boundary(DO::Sphere_surface({0., 0., 0.}, target_factor)));
@@ -862,7 +862,7 @@ TEST(VolumeWorkflow, UntanglingLoosensABarrierThatWallsATangleIn)
   DEMO_SURFACE(cross, "cross.off");
   const C3t3 c3t3 = DO::mesh_interior(cross);
   Targets ball;
-  ASSERT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)), 0u);
+  ASSERT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball)), 0u);
   DO::Untangle_result r;
   ASSERT_NO_THROW(r = DO::untangle(c3t3, Target_map(ball), DOP::sliding_boundary(DO::Sphere_surface())));
   EXPECT_EQ(r.inverted_after, 0u);
@@ -879,7 +879,7 @@ TEST(VolumeWorkflow, AFoldOfTheSlidingBoundaryHoldsBackOnlyItsOwnVertices)
   DEMO_SURFACE(helmet, "helmet.off");
   const C3t3 c3t3 = DO::mesh_interior(helmet);
   Targets start;
-  DO::radial_map(c3t3, Target_map(start), DO::volume_centroid(c3t3));
+  DO::radial_map(c3t3, Target_map(start));
   const DO::Triangle_surface surface = DO::Triangle_surface::from_complex_boundary(c3t3, Target_map(start));
   Targets map = start;
   const DO::Result r = CGAL::minimize_distortion(
@@ -1025,8 +1025,8 @@ TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)
   const Point c = DO::volume_centroid(unit), h = DO::volume_centroid(huge);
   EXPECT_EQ(Point(h.x() / 0x1p1023, h.y() / 0x1p1023, h.z() / 0x1p1023), c);
   Targets unit_ball, huge_ball;
-  EXPECT_EQ(DO::star_shaped_to_unit_ball(unit, Target_map(unit_ball), c), 0u);
-  EXPECT_EQ(DO::star_shaped_to_unit_ball(huge, Target_map(huge_ball), h), 0u);
+  EXPECT_EQ(DO::star_shaped_to_unit_ball(unit, Target_map(unit_ball), DO::parameters::center(c)), 0u);
+  EXPECT_EQ(DO::star_shaped_to_unit_ball(huge, Target_map(huge_ball), DO::parameters::center(h)), 0u);
   std::vector<Point> a, b;
   for(const auto& [v, p] : unit_ball) a.push_back(p);
   for(const auto& [v, p] : huge_ball) b.push_back(p);
@@ -1037,7 +1037,7 @@ TEST(VolumeWorkflow, StartMapsAtTheEndsOfDoublePrecision)
     C3t3 far;
     tetrahedron(size, far);
     Targets radial;
-    expect_invalid([&] { DO::radial_map(far, Target_map(radial), DO::volume_centroid(far)); }, "beyond double precision");
+    expect_invalid([&] { DO::radial_map(far, Target_map(radial)); }, "beyond double precision");
     EXPECT_TRUE(radial.empty());
   }
 }
@@ -1066,7 +1066,7 @@ TEST(VolumeWorkflow, BallMapOfATetrahedronIsUntangledWithItsBoundarySliding)
   const C3t3 c3t3 = DO::mesh_interior(corner, DOP::cell_size(0.05));
   ASSERT_GT(c3t3.number_of_cells_in_complex(), 4000u);
   Targets ball;
-  EXPECT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)), 100u);
+  EXPECT_GT(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball)), 100u);
   const DO::Result r = CGAL::minimize_distortion(c3t3, Target_map(ball), DO::Conformal_dilatation(),
                                                  DOP::sliding_boundary(DO::Sphere_surface(),
                                                                        DOP::untangle_first(true).number_of_iterations(3)));
@@ -1093,8 +1093,8 @@ TEST(VolumeWorkflow, BallMapOfALinearImageIsTheSameUpToARotation)
   C3t3 cube;
   const std::vector<Vertex_handle> handles = DO::c3t3_from_tetrahedra(cube, points, squeezed.cells);
   Targets a, b;
-  DO::star_shaped_to_unit_ball(long_box, Target_map(a), DO::volume_centroid(long_box));
-  DO::star_shaped_to_unit_ball(cube, Target_map(b), DO::volume_centroid(cube));
+  DO::star_shaped_to_unit_ball(long_box, Target_map(a));
+  DO::star_shaped_to_unit_ball(cube, Target_map(b));
   std::vector<K::Vector_3> image_a(points.size()), image_b(points.size());
   for(std::size_t i = 0; i < points.size(); ++i) {
     image_a[i] = a.at(squeezed.handles[i]) - CGAL::ORIGIN;
@@ -1144,7 +1144,7 @@ TEST(VolumeWorkflow, BallMapFindsTheExitOfRaysThroughBoundaryVertices)
   C3t3 c3t3;
   DO::c3t3_from_tetrahedra(c3t3, meshed.points, meshed.cells);
   Targets ball;
-  ASSERT_NO_THROW(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball), DO::volume_centroid(c3t3)));
+  ASSERT_NO_THROW(DO::star_shaped_to_unit_ball(c3t3, Target_map(ball)));
   // Every boundary vertex on the unit sphere, every other one inside.
   EXPECT_GT(on_the_unit_sphere(c3t3, ball), 1000u);
 }

@@ -96,8 +96,8 @@ int run_tetrahedra(const Command_line& c)
     const K::Point_3 center = c.center.empty() ? DO::volume_centroid(c3t3) : K::Point_3(c.center[0], c.center[1], c.center[2]);
     // The messages in the tool's words: its options rather than the library's functions.
     try {
-      if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, center);
-      else DO::radial_map(c3t3, target_map, center);
+      if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, DO::parameters::center(center));
+      else DO::radial_map(c3t3, target_map, DO::parameters::center(center));
     } catch(const DO::Center_outside_domain&) {
       throw DO::Invalid_input(c.center.empty() ? "the centroid of the volume is outside it (a volume in several parts, or one "
                                                  "curved around its centroid): give a --center inside"
@@ -169,6 +169,21 @@ int run_tetrahedra(const Command_line& c)
     } else {
       output.points[i] = target.points[i];
     }
+  // The cell of the complex of each source cell, and a per-cell value of the complex in the
+  // source's order.
+  std::vector<Tr::Cell_handle> cell_of;
+  if(extension(c.output) == "vtu" || !c.svg.empty())
+    for(const auto& t : source.cells) {
+      Tr::Cell_handle cell;
+      int i0, i1, i2, i3;
+      c3t3.triangulation().is_cell(handles[t[0]], handles[t[1]], handles[t[2]], handles[t[3]], cell, i0, i1, i2, i3);
+      cell_of.push_back(cell);
+    }
+  const auto in_source_order = [&](const auto& per_cell) {
+    std::vector<std::decay_t<decltype(per_cell.begin()->second)>> ordered;
+    for(Tr::Cell_handle cell : cell_of) ordered.push_back(per_cell.at(cell));
+    return ordered;
+  };
   std::vector<double> values;   // each source cell's distortion, for pictures
   std::vector<bool> inverted;   // whether the map inverts or flattens each cell
   if(extension(c.output) == "vtu" || (!c.svg.empty() && !c.ideal())) {
@@ -177,14 +192,15 @@ int run_tetrahedra(const Command_line& c)
     CGAL::compute_distortion(c3t3, target_map, measure,
                              DO::parameters::cell_distortion_map(boost::make_assoc_property_map(per_cell),
                                DO::parameters::inverted_cell_map(boost::make_assoc_property_map(inverted_cell))));
-    for(const auto& t : source.cells) {
-      Tr::Cell_handle cell;
-      int i0, i1, i2, i3;
-      c3t3.triangulation().is_cell(handles[t[0]], handles[t[1]], handles[t[2]], handles[t[3]], cell, i0, i1, i2, i3);
-      values.push_back(per_cell.at(cell));
-      inverted.push_back(inverted_cell.at(cell));
-    }
+    values = in_source_order(per_cell);
+    inverted = in_source_order(inverted_cell);
   }
+  // With --reference ideal, the pictures show each cell's radius ratio at `positions`.
+  const auto radius_ratios = [&](const auto& positions) {
+    std::unordered_map<Tr::Cell_handle, double> ratio;
+    DO::mesh_quality(c3t3, positions, DO::parameters::cell_radius_ratio_map(boost::make_assoc_property_map(ratio)));
+    return in_source_order(ratio);
+  };
   if(extension(c.output) == "vtu") {
     std::vector<std::array<double, 3>> displacement;
     for(std::size_t i = 0; i < output.points.size(); ++i)
@@ -199,9 +215,13 @@ int run_tetrahedra(const Command_line& c)
     write_pictures(c, {}, {}, measure_name, measure_name, r);
   else if(c.ideal())   // the quality of the mesh before and after
     write_pictures(c, DO::IO::cross_section_panel("before, section z = middle", source.points, source.cells,
-                                                  DO::radius_ratios(source.points, source.cells)),
+                                                  radius_ratios(boost::make_function_property_map<Tr::Vertex_handle>(
+                                                    [&](Tr::Vertex_handle v) {
+                                                      const auto& p = source.points[index.at(v)];
+                                                      return K::Point_3(p[0], p[1], p[2]);
+                                                    }))),
                    DO::IO::cross_section_panel("after, section z = middle", output.points, output.cells,
-                                               DO::radius_ratios(output.points, output.cells)), "radius ratio", measure_name, r);
+                                               radius_ratios(target_map)), "radius ratio", measure_name, r);
   else {
     const std::vector<double> shown = red_where_inverted(values, inverted);
     write_pictures(c, DO::IO::cross_section_panel("source, section z = middle", source.points, source.cells, shown),

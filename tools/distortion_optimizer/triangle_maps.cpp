@@ -115,11 +115,12 @@ int run_triangles(const Command_line& c)
   for(const auto& p : source.points) planar = planar && p[2] == 0;
 
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
+  auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
+  for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
   if(c.ideal()) {
     if(!planar) throw DO::Invalid_input(c.source + ": --reference ideal needs a planar mesh (z = 0) or a .mesh");
     // As with a .mesh: the mesh improved is the source, which must be valid (not folded, no flat triangle).
-    const std::vector<bool> inverted = DO::inverted_triangles(source.points, source.cells);
-    if(const auto count = std::count(inverted.begin(), inverted.end(), true); count > 0)
+    if(const auto count = DO::mesh_quality(mesh, source_2).inverted_cells; count > 0)
       throw DO::Invalid_input(c.source + ": " + std::to_string(count) + " of its triangles are inverted or flat (--reference "
                               "ideal takes a valid mesh: --untangle repairs a map's target, not the source)");
     for(Vertex v : mesh.vertices()) uv[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
@@ -183,9 +184,6 @@ int run_triangles(const Command_line& c)
     const std::vector<double> w = DO::IO::read_vertex_weights(c.vertex_weights, mesh.number_of_vertices());
     for(Vertex v : mesh.vertices()) weights[v] = w[std::size_t(v)];
   }
-
-  auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
-  for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
 
   std::string measure_name;
   Fields fields;
@@ -288,15 +286,19 @@ int run_triangles(const Command_line& c)
     // A map's distortion, or with --reference ideal the quality of the mesh before and after.
     std::vector<std::array<double, 3>> points;
     for(Vertex v : mesh.vertices()) points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
-    if(c.ideal())
-      write_pictures(c, DO::IO::triangle_panel("before", points, output.cells,
-                                               red_where_inverted(DO::radius_ratios(points, output.cells),
-                                                                  DO::inverted_triangles(points, output.cells))),
-                     DO::IO::triangle_panel("after", output.points, output.cells,
-                                            red_where_inverted(DO::radius_ratios(output.points, output.cells),
-                                                               DO::inverted_triangles(output.points, output.cells))),
-                     "radius ratio", measure_name, r);
-    else {
+    if(c.ideal()) {
+      // Each face's radius ratio at `positions`, red where the face is inverted.
+      auto ratio = mesh.add_property_map<Mesh::Face_index, double>("f:radius_ratio").first;
+      auto inverted_at = mesh.add_property_map<Mesh::Face_index, bool>("f:inverted_at").first;
+      const auto quality = [&](const auto& positions) {
+        DO::mesh_quality(mesh, positions, DO::parameters::cell_radius_ratio_map(ratio, DO::parameters::inverted_cell_map(inverted_at)));
+        std::vector<double> shown;
+        for(auto f : mesh.faces()) shown.push_back(inverted_at[f] ? std::numeric_limits<double>::infinity() : ratio[f]);
+        return shown;
+      };
+      write_pictures(c, DO::IO::triangle_panel("before", points, output.cells, quality(source_2)),
+                     DO::IO::triangle_panel("after", output.points, output.cells, quality(uv)), "radius ratio", measure_name, r);
+    } else {
       const std::vector<double> shown = red_where_inverted(values, inverted);
       write_pictures(c, DO::IO::triangle_panel("source", points, output.cells, shown),
                      DO::IO::triangle_panel("map", output.points, output.cells, shown), measure_name, measure_name, r);

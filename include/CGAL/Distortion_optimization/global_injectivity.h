@@ -12,7 +12,9 @@
 #include <CGAL/Distortion_optimization/internal/boundary_guard.h>
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
 
@@ -37,14 +39,31 @@ the `double` coordinates of the targets. A map with no inverted or flat triangle
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam TargetMap a model of `ReadablePropertyMap` from vertex descriptors to a `Point_2`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param tm the triangle mesh (not modified)
+\param target the image of each vertex
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and
+                          `num_vertices(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \throws Invalid_input if a face of `tm` is not a triangle
 */
-template <class TriangleMesh, class TargetMap>
-bool is_boundary_embedded(const TriangleMesh& tm, const TargetMap& target)
+template <class TriangleMesh, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool is_boundary_embedded(const TriangleMesh& tm, const TargetMap& target,
+                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   using Guard = internal::Boundary_guard<2>;
-  const auto index = CGAL::get_initialized_vertex_index_map(tm);
+  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   std::vector<std::array<std::uint32_t, 3>> faces;
   for(auto f : CGAL::faces(tm)) {
     std::array<std::uint32_t, 3> t;

@@ -76,12 +76,10 @@ struct Interior_mesh_sizes
 
 namespace internal_np {
 enum cell_size_t { cell_size };
-enum cell_radius_edge_ratio_t { cell_radius_edge_ratio };
 enum facet_size_t { facet_size };
 enum facet_distance_t { facet_distance };
 enum facet_angle_t { facet_angle };
 enum edge_size_t { edge_size };
-enum sharp_edge_angle_t { sharp_edge_angle };
 enum odt_iterations_t { odt_iterations };
 enum lloyd_iterations_t { lloyd_iterations };
 enum perturb_slivers_t { perturb_slivers };
@@ -95,9 +93,6 @@ namespace parameters {
 /// `mesh_interior()`: upper bound on the circumradius of the tetrahedra (a length, > 0). Default:
 /// the size that gives about 3.10^4 tetrahedra (see `mesh_interior()`).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_size_t, cell_size)
-/// `mesh_interior()`: upper bound on circumradius / shortest edge of the tetrahedra (>= 2, where
-/// Mesh_3 is proved to terminate). Default 3.
-CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_radius_edge_ratio_t, cell_radius_edge_ratio)
 /// `mesh_interior()`: upper bound on the radius of the surface Delaunay ball of a boundary facet
 /// (a length, > 0). Default: the cell size.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(facet_size_t, facet_size)
@@ -111,11 +106,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(facet_angle_t, facet_angle)
 /// `mesh_interior()`: upper bound on the protecting balls (hence the edges) along the sharp edges
 /// (a length, > 0). Default: the facet size.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(edge_size_t, edge_size)
-/// `mesh_interior()`: an input edge is sharp, and kept as a polyline of the output, when the
-/// normals of its two faces make an angle larger than this, in degrees, in (0, 180]; 180 keeps no
-/// edge (better for noisy scanned surfaces, whose spurious sharp edges make small tetrahedra).
-/// Default 60 (Mesh_3's).
-CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(sharp_edge_angle_t, sharp_edge_angle)
+// (`cell_radius_edge_ratio` and `sharp_edge_angle` are in parameters.h: `tetrahedralize_with_tetgen()` and
+// `sharp_boundary_vertices()` read them too.)
 /// `mesh_interior()`: an `int`, the number of iterations of Mesh_3's ODT smoothing (moves vertices
 /// to lower the optimal-Delaunay-triangulation energy, `CGAL::odt_optimize_mesh_3()`), run after
 /// the refinement; 0 (the default) skips it. It stops earlier when it converges.

@@ -52,15 +52,29 @@ struct Mesh_quality
 
 namespace internal {
 
-// Calls f(points) with each cell's vertex positions under `positions` (triangles of a triangle
-// mesh, tetrahedra of the complex).
+// The key of a cell's property maps: a face of a triangle mesh, a `Cell_handle` of a complex.
+template <class Mesh, bool = Is_c3t3<Mesh>::value>
+struct Cell_key
+{
+  using type = typename boost::graph_traits<Mesh>::face_descriptor;
+};
+
+template <class Mesh>
+struct Cell_key<Mesh, true>
+{
+  using type = typename Mesh::Triangulation::Cell_handle;
+};
+
+// Calls f(cell, points) with each cell (a face of a triangle mesh, a `Cell_handle` of the complex:
+// only its cells in the complex) and its vertex positions under `positions`.
 template <class Mesh, class PositionMap, class F>
 void for_each_cell_points(const Mesh& mesh, const PositionMap& positions, const F& f)
 {
   using Point = typename boost::property_traits<PositionMap>::value_type;
   if constexpr(Is_c3t3<Mesh>::value) {
     for(auto c = mesh.cells_in_complex_begin(); c != mesh.cells_in_complex_end(); ++c)
-      f(std::array<Point, 4>{get(positions, c->vertex(0)), get(positions, c->vertex(1)), get(positions, c->vertex(2)),
+      f(typename Mesh::Triangulation::Cell_handle(c),
+        std::array<Point, 4>{get(positions, c->vertex(0)), get(positions, c->vertex(1)), get(positions, c->vertex(2)),
                              get(positions, c->vertex(3))});
   } else {
     for(auto face : faces(mesh)) {
@@ -71,7 +85,7 @@ void for_each_cell_points(const Mesh& mesh, const PositionMap& positions, const 
         p[i++] = get(positions, v);
       }
       if(i != 3) throw Invalid_input("face " + std::to_string(std::size_t(face)) + " is not a triangle");
-      f(p);
+      f(face, p);
     }
   }
 }
@@ -179,29 +193,89 @@ void use_ideal_cells(Simplicial_map<n>& map)
 
 } // namespace internal
 
-/// \ingroup PkgDistortionOptimizationRef
-/// The shape quality of the triangles of `tm` (a `Point_2` position map) or of the tetrahedra of
-/// a `Mesh_complex_3_in_triangulation_3` (a `Point_3` position map keyed by `Vertex_handle`; only
-/// cells in the complex count) at `positions`: smallest, largest and mean smallest angles
-/// (dihedral angles in 3D), radius ratios, slivers and inverted cells. A triangle is inverted when
-/// its orientation differs from the sign of the mesh's total signed area (a mesh may be clockwise
-/// as a whole); a tetrahedron when it is not positive, as every cell of a complex is.
-/// \throws Invalid_input if a face is not a triangle or the mesh has no cell
-template <class Mesh, class PositionMap>
-Mesh_quality mesh_quality(const Mesh& mesh, const PositionMap& positions)
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+The shape quality of the triangles of a planar triangle mesh, or of the tetrahedra of a
+`CGAL::Mesh_complex_3_in_triangulation_3` (only the cells in the complex count), at `positions`:
+smallest, largest and mean smallest angles (dihedral angles in 3D), radius ratios, slivers and
+inverted cells. A triangle is inverted when its orientation differs from the sign of the mesh's
+total signed area (a mesh may be clockwise as a whole); a tetrahedron when it is not positive, as
+every cell of a complex is. The radius ratio and the inversion of each cell can also be written
+to property maps, e.g. to draw a mesh's quality with `IO::write_SVG()`.
+
+\tparam Mesh a triangle mesh (a model of `FaceListGraph`) or a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam PositionMap a model of `ReadablePropertyMap` from the vertex descriptors of a triangle mesh
+        to `Point_2`, or from `Mesh::Triangulation::Vertex_handle` to `Point_3`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param mesh the mesh (not modified)
+\param positions the position of each vertex
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below. The cell maps are keyed by `boost::graph_traits<Mesh>::%face_descriptor`
+       for a triangle mesh, by `Mesh::Triangulation::Cell_handle` (the cells of the complex) for a
+       complex.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{cell_radius_ratio_map}
+    \cgalParamDescription{a property map that receives the radius ratio \f$ n r / R \f$ of each cell (inradius over
+                          circumradius, 1 for the regular simplex, 0 for a flat cell), the values whose smallest
+                          and mean are `Mesh_quality::min_radius_ratio` and `Mesh_quality::mean_radius_ratio`
+                          (`Distortion_optimization::parameters::cell_radius_ratio_map()`)}
+    \cgalParamType{a class model of `WritablePropertyMap` with the cell key type and `double` as value type}
+    \cgalParamDefault{unused}
+    \cgalParamExtra{Written only when the function returns normally.}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{inverted_cell_map}
+    \cgalParamDescription{as `cell_radius_ratio_map`, `true` for each cell counted in `Mesh_quality::inverted_cells` (flat
+                          ones included), `false` for the others (`Distortion_optimization::parameters::inverted_cell_map()`)}
+    \cgalParamType{the same, with `bool` as value type}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type of `positions`, using `CGAL::Kernel_traits`}
+    \cgalParamExtra{Its `Compute_area_2` and `Orientation_2` (triangle mesh) or `Orientation_3` (complex) decide
+                    which cells are inverted, exactly on the coordinates of `positions`.}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the statistics of the cells' shapes
+\throws Invalid_input if a face is not a triangle or the mesh has no cell
+*/
+template <class Mesh, class PositionMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Mesh_quality mesh_quality(const Mesh& mesh, const PositionMap& positions,
+                          const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   using Point = typename boost::property_traits<PositionMap>::value_type;
+  using Default_traits = typename CGAL::Kernel_traits<Point>::Kernel;
+  using GT = typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                                 Default_traits>::type;
+  const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const auto ratio_map = get_parameter(np, internal_np::cell_radius_ratio_map);
+  const auto inverted_map = get_parameter(np, internal_np::inverted_cell_map);
+  constexpr bool wants_ratios = !std::is_same<std::decay_t<decltype(ratio_map)>, CGAL::internal_np::Param_not_found>::value;
+  constexpr bool wants_inverted = !std::is_same<std::decay_t<decltype(inverted_map)>, CGAL::internal_np::Param_not_found>::value;
   constexpr int n = internal::Is_c3t3<Mesh>::value ? 3 : 2;
+  using Cell = typename internal::Cell_key<Mesh>::type;
   Mesh_quality q;
   double signed_area = 0;
   if constexpr(n == 2)
-    internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, 3>& p) {
-      signed_area += CGAL::to_double(CGAL::area(p[0], p[1], p[2]));
+    internal::for_each_cell_points(mesh, positions, [&](const Cell&, const std::array<Point, 3>& p) {
+      signed_area += CGAL::to_double(gt.compute_area_2_object()(p[0], p[1], p[2]));
     });
   const CGAL::Orientation expected = n == 3 ? CGAL::POSITIVE : internal::planar_orientation(signed_area);
+  // Each cell's values, put in the maps once every cell was measured.
+  std::vector<std::pair<Cell, double>> ratios;
+  std::vector<std::pair<Cell, bool>> inverted;
   q.min_angle = 180;
   q.min_radius_ratio = 1;
-  internal::for_each_cell_points(mesh, positions, [&](const std::array<Point, n + 1>& p) {
+  internal::for_each_cell_points(mesh, positions, [&](const Cell& cell, const std::array<Point, n + 1>& p) {
     std::array<internal::Vector<3>, n + 1> x;
     for(int i = 0; i <= n; ++i) x[i] = internal::as_vector(p[i]);
     std::array<double, 6> angles;
@@ -215,72 +289,60 @@ Mesh_quality mesh_quality(const Mesh& mesh, const PositionMap& positions)
     q.min_radius_ratio = std::min(q.min_radius_ratio, ratio);
     q.mean_radius_ratio += ratio;
     q.slivers += smallest < 10;
-    if constexpr(n == 2) q.inverted_cells += CGAL::orientation(p[0], p[1], p[2]) != expected;
-    else q.inverted_cells += CGAL::orientation(p[0], p[1], p[2], p[3]) != expected;
+    bool is_inverted = false;
+    if constexpr(n == 2) is_inverted = gt.orientation_2_object()(p[0], p[1], p[2]) != expected;
+    else is_inverted = gt.orientation_3_object()(p[0], p[1], p[2], p[3]) != expected;
+    q.inverted_cells += is_inverted;
+    if constexpr(wants_ratios) ratios.emplace_back(cell, ratio);
+    if constexpr(wants_inverted) inverted.emplace_back(cell, is_inverted);
     ++q.cells;
   });
   if(q.cells == 0) throw Invalid_input("the mesh has no cell");
   q.mean_min_angle /= q.cells;
   q.mean_radius_ratio /= q.cells;
+  if constexpr(wants_ratios)
+    for(const auto& [cell, ratio] : ratios) put(ratio_map, cell, ratio);
+  if constexpr(wants_inverted)
+    for(const auto& [cell, is_inverted] : inverted) put(inverted_map, cell, is_inverted);
   return q;
 }
 
-/// \ingroup PkgDistortionOptimizationRef
-/// The radius ratio \f$ n r / R \f$ of each cell of a soup (`N = 3`: triangles, `N = 4`:
-/// tetrahedra; inradius over circumradius, 1 for the regular simplex, 0 for a flat cell), as
-/// `mesh_quality()` measures it, e.g. to draw a mesh's quality with `IO::write_SVG()`.
-/// \pre every index of `cells` is smaller than `points.size()`.
-template <std::size_t N>
-std::vector<double> radius_ratios(const std::vector<std::array<double, 3>>& points,
-                                  const std::vector<std::array<std::size_t, N>>& cells)
-{
-  static_assert(N == 3 || N == 4, "radius_ratios takes triangles or tetrahedra");
-  std::vector<double> ratios;
-  ratios.reserve(cells.size());
-  for(const auto& c : cells) {
-    std::array<internal::Vector<3>, N> p;
-    for(std::size_t i = 0; i < N; ++i) p[i] = internal::Vector<3>(points[c[i]][0], points[c[i]][1], points[c[i]][2]);
-    std::array<double, 6> angles;
-    int count;
-    double ratio;
-    internal::cell_shape(p, angles, count, ratio);
-    ratios.push_back(ratio);
-  }
-  return ratios;
-}
+/*!
+\ingroup PkgDistortionOptimizationRef
 
-/// \ingroup PkgDistortionOptimizationRef
-/// Whether each triangle of a planar soup (the points' x and y; z is ignored) is inverted as
-/// `mesh_quality()` counts it: its orientation (exact predicate) differs from the sign of the
-/// soup's total signed area, flat triangles included. E.g. to draw them apart in a picture of
-/// `radius_ratios()` with `IO::write_SVG()`.
-/// \pre every index of `cells` is smaller than `points.size()`.
-inline std::vector<bool> inverted_triangles(const std::vector<std::array<double, 3>>& points,
-                                            const std::vector<std::array<std::size_t, 3>>& cells)
-{
-  using Point = CGAL::Epick::Point_2;
-  const auto point = [&](std::size_t v) { return Point(points[v][0], points[v][1]); };
-  double signed_area = 0;
-  for(const auto& t : cells) signed_area += CGAL::area(point(t[0]), point(t[1]), point(t[2]));
-  const CGAL::Orientation expected = internal::planar_orientation(signed_area);
-  std::vector<bool> inverted;
-  inverted.reserve(cells.size());
-  for(const auto& t : cells) inverted.push_back(CGAL::orientation(point(t[0]), point(t[1]), point(t[2])) != expected);
-  return inverted;
-}
+The vertices of the complex's boundary on a sharp edge at `positions`: an edge whose two boundary
+facets have normals more than `sharp_edge_angle` degrees apart (as `mesh_interior()`'s), corners
+included, and the edges of more than two boundary facets. With the boundary sliding in
+`improve_mesh_quality()`, constraining them keeps the features: a vertex on an edge would
+otherwise round it off.
 
-/// \ingroup PkgDistortionOptimizationRef
-/// The vertices of the complex's boundary on a sharp edge at `positions`: an edge whose two
-/// boundary facets have normals more than `angle` degrees apart (as `mesh_interior()`'s
-/// `sharp_edge_angle`), corners included. With the boundary sliding in `improve_mesh_quality()`,
-/// constraining them keeps the features: a vertex on an edge would otherwise round it off.
-/// \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
-/// \tparam PositionMap a readable property map from `Vertex_handle` to `Point_3`
-template <class C3T3, class PositionMap>
+\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam PositionMap a model of `ReadablePropertyMap` from `C3T3::Triangulation::Vertex_handle` to `Point_3`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param c3t3 the complex (not modified); only the cells in the complex count
+\param positions the position of each vertex of the cells of the complex
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{sharp_edge_angle}
+    \cgalParamDescription{an edge is sharp when the normals of its two boundary facets make a larger angle, in degrees
+                          (`Distortion_optimization::parameters::sharp_edge_angle()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`60`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the vertices on the sharp edges
+*/
+template <class C3T3, class PositionMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::unordered_set<typename C3T3::Triangulation::Vertex_handle>
-sharp_boundary_vertices(const C3T3& c3t3, const PositionMap& positions, double angle = 60)
+sharp_boundary_vertices(const C3T3& c3t3, const PositionMap& positions,
+                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  const double angle = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::sharp_edge_angle), 60.);
   std::map<std::pair<Vertex_handle, Vertex_handle>, std::vector<internal::Vector<3>>> normals;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
     for(int i = 0; i < 4; ++i) {

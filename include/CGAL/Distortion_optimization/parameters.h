@@ -76,6 +76,9 @@ enum use_harmonic_start_t { use_harmonic_start };
 enum vertex_weight_map_t { vertex_weight_map };
 enum cell_distortion_map_t { cell_distortion_map };
 enum inverted_cell_map_t { inverted_cell_map };
+enum cell_radius_ratio_map_t { cell_radius_ratio_map };
+enum sharp_edge_angle_t { sharp_edge_angle };
+enum cell_radius_edge_ratio_t { cell_radius_edge_ratio };
 enum cell_weighting_t { cell_weighting };
 enum convergence_threshold_t { convergence_threshold };
 enum local_solver_t { local_solver };
@@ -105,8 +108,22 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(vertex_weight_map_t, vertex_wei
 /// A writable cell (face) property map that receives the distortion of each cell.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_distortion_map_t, cell_distortion_map)
 /// A writable cell (face) property map that receives, for each cell, whether the map inverts or
-/// flattens it (`true`) or keeps its orientation (`false`).
+/// flattens it (`true`) or keeps its orientation (`false`); for `mesh_quality()`, whether the cell
+/// is inverted at the positions.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(inverted_cell_map_t, inverted_cell_map)
+/// `mesh_quality()`: a writable cell (face) property map that receives the radius ratio of each
+/// cell (n r / R, 1 for the regular simplex, 0 for a flat cell).
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_radius_ratio_map_t, cell_radius_ratio_map)
+/// An angle in degrees: an edge is sharp when the normals of its two faces make a larger angle.
+/// `mesh_interior()`: an input edge that is sharp is kept as a polyline of the output; in (0, 180],
+/// 180 keeps no edge (better for noisy scanned surfaces, whose spurious sharp edges make small
+/// tetrahedra); default 60 (Mesh_3's). `sharp_boundary_vertices()`: the edges of the complex's
+/// boundary whose vertices it returns; default 60.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(sharp_edge_angle_t, sharp_edge_angle)
+/// Upper bound on circumradius / shortest edge of the tetrahedra. `mesh_interior()`: >= 2, where
+/// Mesh_3 is proved to terminate; default 3. `tetrahedralize_with_tetgen()`: TetGen's `q`;
+/// default 1.414.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_radius_edge_ratio_t, cell_radius_edge_ratio)
 /// A `Cell_weighting`; default `Cell_weighting::AVERAGE_VOLUME`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cell_weighting_t, cell_weighting)
 

@@ -12,6 +12,7 @@
 #include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/c3t3_adapter.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 #include <CGAL/Distortion_optimization/internal/named_parameters.h>
@@ -37,6 +38,16 @@
 
 namespace CGAL {
 namespace Distortion_optimization {
+
+namespace internal_np {
+enum center_t { center };
+} // namespace internal_np
+
+namespace parameters {
+/// `radial_map()` and `star_shaped_to_unit_ball()`: the centre of the map, a point of the
+/// complex's kernel (`Point_3`, or `CGAL::ORIGIN`); default `volume_centroid()` of the complex.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(center_t, center)
+} // namespace parameters
 
 /// \ingroup PkgDistortionOptimizationRef
 /// `put(target, v, f(p))` for every vertex `v` (position `p`, a `Point_3`) of the cells of the complex.
@@ -168,20 +179,57 @@ typename C3T3::Triangulation::Geom_traits::Point_3 volume_centroid(const C3T3& c
   return Point_3(x / volume / s, y / volume / s, z / volume / s);
 }
 
-/// \ingroup PkgDistortionOptimizationRef
-/// The radial map of the paper's Table 1 and Fig. 5 about `center`: `p` goes to
-/// `(p - center) |p - center|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the
-/// unit sphere and shrinks the inside). Injective on any domain, but with a conformal distortion
-/// that grows without bound towards the centre: a hard start for the optimizer.
-/// \throws Center_outside_domain (an `Invalid_input`) if `center` is not strictly inside the
-/// domain (exact predicates), as for `star_shaped_to_unit_ball()`: about a point outside, the map
-/// is no longer the one that shrinks the domain onto its centre; `Invalid_input` if the image,
-/// whose size is the square of the domain's, is beyond double precision (a domain larger than
-/// \f$ 2^{500} \f$ or smaller than \f$ 2^{-500} \f$ about `center`). `target` is then unchanged.
-template <class C3T3, class TargetMap>
-void radial_map(const C3T3& c3t3, TargetMap target, const typename C3T3::Triangulation::Geom_traits::Point_3& center)
+namespace internal {
+
+// The `center` named parameter, or the complex's volume centroid.
+template <class C3T3, class NamedParameters>
+C3t3_point<C3T3> center_parameter(const C3T3& c3t3, const NamedParameters& np)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::center_t>::value)
+    return volume_centroid(c3t3);
+  else
+    return C3t3_point<C3T3>(CGAL::parameters::get_parameter(np, internal_np::center));
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+The radial map of the paper's Table 1 and Fig. 5 about a centre `c`: `p` goes to
+`(p - c) |p - c|` (on the unit ball about the origin, f0(x) = x |x|, which keeps the unit sphere
+and shrinks the inside). Injective on any domain, but with a conformal distortion that grows
+without bound towards the centre: a hard start for the optimizer.
+
+\tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
+\tparam TargetMap a model of `WritablePropertyMap` from `C3T3::Triangulation::Vertex_handle` to `Point_3`
+\tparam NamedParameters a sequence of \ref secDistortionNamedParameters "Named Parameters"
+
+\param c3t3 the complex (not modified); only the cells in the complex count
+\param target receives the image of each vertex of the cells of the complex
+\param np an optional sequence of \ref secDistortionNamedParameters "Named Parameters" among the
+       ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{center}
+    \cgalParamDescription{the centre `c` of the map (`Distortion_optimization::parameters::center()`)}
+    \cgalParamType{`C3T3::Triangulation::Geom_traits::Point_3`, or a type it is constructible from such as `CGAL::Origin`}
+    \cgalParamDefault{`volume_centroid(c3t3)`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws Center_outside_domain (an `Invalid_input`) if the centre is not strictly inside the
+domain (exact predicates), as for `star_shaped_to_unit_ball()`: about a point outside, the map is
+no longer the one that shrinks the domain onto its centre; `Invalid_input` if the image, whose
+size is the square of the domain's, is beyond double precision (a domain larger than
+\f$ 2^{500} \f$ or smaller than \f$ 2^{-500} \f$ about the centre), and, without `center`, as
+`volume_centroid()`. `target` is then unchanged.
+*/
+template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void radial_map(const C3T3& c3t3, TargetMap target, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using Point_3 = internal::C3t3_point<C3T3>;
+  const Point_3 center = internal::center_parameter(c3t3, np);
   if(!internal::is_strictly_inside(c3t3, center))
     throw Center_outside_domain("the centre of the radial map is not strictly inside the domain");
   const auto& tr = c3t3.triangulation();
@@ -202,34 +250,41 @@ void radial_map(const C3T3& c3t3, TargetMap target, const typename C3T3::Triangu
   });
 }
 
-/// \ingroup PkgDistortionOptimizationRef
-/// Maps a domain star-shaped about `center` onto the unit ball centred at the origin: the point
-/// `center + r u` (|u| = 1) goes to `(r / R(u)) Au / |Au|`, where `R(u)` is the distance from
-/// `center` to the complex boundary along `u` (found by ray casting in an AABB tree of the boundary
-/// facets); boundary vertices land on the unit sphere. This is the radial construction of Naitsat,
-/// Saucan and Zeevi, "Geometry-based distortion measures ...", section 4.4, applied to the domain
-/// transformed by the symmetric matrix `A` that makes its inertia about `center` the same about
-/// every axis (the inverse square root of its second moment; a ratio `r / R(u)` along a ray is
-/// kept by any linear map). On a domain as wide in every direction, such as a cube or a ball about
-/// its centre, `A` is a multiple of the identity up to the mesh's own asymmetry, and the map is
-/// theirs. An elongated domain is no longer squeezed across its length onto narrow cones about its
-/// axis, a start that even the untangling with the boundary sliding may fail to repair. The domain
-/// must be star-shaped about `center`: `center` on the inner side of the plane of every boundary
-/// facet (exact predicates), checked before anything is written.
-///
-/// Even then the map is not always valid: near a sharp edge of the domain, a tetrahedron whose four
-/// vertices are on the boundary, on both sides of the edge, can come out flat or inverted (the
-/// edge is rounded onto the sphere). Their number is returned; `CGAL::minimize_distortion()` with
-/// `Distortion_optimization::parameters::untangle_first(true)` repairs them.
-/// \returns the number of cells of the complex the map inverts or flattens (exact predicate)
-/// \throws Center_outside_domain (an `Invalid_input`) if `center` is not strictly inside the
-/// domain, or Domain_not_star_shaped (an `Invalid_input`) if the domain is not star-shaped about
-/// it (the message names the first boundary facet that faces `center`; another centre, or
-/// untangling a map built otherwise, e.g. the radial map, are the remedies). `target` is then
-/// unchanged.
-template <class C3T3, class TargetMap>
+/*!
+\ingroup PkgDistortionOptimizationRef
+
+Maps a domain star-shaped about a centre `c` onto the unit ball centred at the origin: the point
+`c + r u` (|u| = 1) goes to `(r / R(u)) Au / |Au|`, where `R(u)` is the distance from `c` to the
+complex boundary along `u` (found by ray casting in an AABB tree of the boundary facets); boundary
+vertices land on the unit sphere. This is the radial construction of Naitsat, Saucan and Zeevi,
+"Geometry-based distortion measures ...", section 4.4, applied to the domain transformed by the
+symmetric matrix `A` that makes its inertia about `c` the same about every axis (the inverse
+square root of its second moment; a ratio `r / R(u)` along a ray is kept by any linear map). On a
+domain as wide in every direction, such as a cube or a ball about its centre, `A` is a multiple of
+the identity up to the mesh's own asymmetry, and the map is theirs. An elongated domain is no
+longer squeezed across its length onto narrow cones about its axis, a start that even the
+untangling with the boundary sliding may fail to repair. The domain must be star-shaped about
+`c`: `c` on the inner side of the plane of every boundary facet (exact predicates), checked before
+anything is written.
+
+Even then the map is not always valid: near a sharp edge of the domain, a tetrahedron whose four
+vertices are on the boundary, on both sides of the edge, can come out flat or inverted (the edge
+is rounded onto the sphere). Their number is returned; `CGAL::minimize_distortion()` with
+`Distortion_optimization::parameters::untangle_first(true)` repairs them.
+
+The template parameters, the parameters and the named parameter `center` (the centre `c`,
+default `volume_centroid(c3t3)`) are those of `radial_map()`, see there.
+
+\returns the number of cells of the complex the map inverts or flattens (exact predicate)
+\throws Center_outside_domain (an `Invalid_input`) if the centre is not strictly inside the
+domain, or Domain_not_star_shaped (an `Invalid_input`) if the domain is not star-shaped about it
+(the message names the first boundary facet that faces the centre; another centre, or untangling
+a map built otherwise, e.g. the radial map, are the remedies); without `center`, as
+`volume_centroid()`. `target` is then unchanged.
+*/
+template <class C3T3, class TargetMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target,
-                                     const typename C3T3::Triangulation::Geom_traits::Point_3& center)
+                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
   using Point_3 = internal::C3t3_point<C3T3>;
   using K = typename Kernel_traits<Point_3>::Kernel;
@@ -238,6 +293,7 @@ std::size_t star_shaped_to_unit_ball(const C3T3& c3t3, TargetMap target,
   using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
   const auto& tr = c3t3.triangulation();
   auto point = tr.geom_traits().construct_point_3_object();
+  const Point_3 center = internal::center_parameter(c3t3, np);
   if(!internal::is_strictly_inside(c3t3, center))
     throw Center_outside_domain("the centre of the ball map is not strictly inside the domain");
   // The rays are cast in coordinates scaled by `scale` (see complex_scale()); the image does not change.
