@@ -86,7 +86,9 @@ TEST(TetrahedralMeshes, TetgenTakesItsBoundsAndMapsByName)
     double total = 0;
     for(const auto& t : s->cells) {
       EXPECT_GT(volume(*s, t), 0);
-      if(s != &unbounded) EXPECT_LE(volume(*s, t), 0.05);
+      if(s != &unbounded) {
+        EXPECT_LE(volume(*s, t), 0.05);
+      }
       total += volume(*s, t);
     }
     EXPECT_NEAR(total, 8, 1e-9);
