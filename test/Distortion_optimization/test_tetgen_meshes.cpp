@@ -246,8 +246,11 @@ TEST(TetrahedralMeshes, TetgenCubeThroughC3t3FromTetrahedra)
   for(const auto& kv : ball) {
     const Point_3& q = kv.second;
     const double r = std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z()));
-    if(boundary.count(kv.first)) EXPECT_NEAR(r, 1., 1e-9);
-    else EXPECT_LT(r, 1.);
+    if(boundary.count(kv.first)) {
+      EXPECT_NEAR(r, 1., 1e-9);
+    } else {
+      EXPECT_LT(r, 1.);
+    }
   }
   // Those cells are repaired by untangling with the boundary sliding on the sphere (Fig. 13).
   ASSERT_GT(flat, 0u);

@@ -593,7 +593,9 @@ TEST(TetrahedralMeshes, StartMapsTakeTheirCentreByName)
   for(const auto& [v, q] : about_off) {
     moved += q != by_default.at(v);
     EXPECT_LE(norm(q), 1 + 1e-12);
-    if(boundary.count(v)) EXPECT_NEAR(norm(q), 1, 1e-12);
+    if(boundary.count(v)) {
+      EXPECT_NEAR(norm(q), 1, 1e-12);
+    }
   }
   EXPECT_EQ(moved, about_off.size());
   DO::star_shaped_to_unit_ball(c3t3, Target_map(at_origin), DO::parameters::center(CGAL::ORIGIN));

@@ -465,7 +465,6 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
 {
   using GT = internal::Interior_mesh_traits_of<NamedParameters>;
   using Types = Interior_mesh<GT>;
-  using D = internal::Interior_mesh_defaults;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
@@ -482,8 +481,7 @@ mesh_interior(const TriangleMesh& surface, const NamedParameters& np = CGAL::par
                         internal::shown_number(settings.time_limit));
   if(settings.odt_iterations < 0 || settings.lloyd_iterations < 0)
     throw Invalid_input("mesh_interior: the numbers of ODT and Lloyd iterations must be >= 0");
-  const double asked = checked.volume / (D::volume_per_cell * std::pow(sizes.cell_size, 3)) / D::cells_per_vertex +
-                       checked.area / (D::area_per_facet * sizes.facet_size * sizes.facet_size) / 2;
+  const double asked = internal::asked_vertices(checked.volume, checked.area, sizes.cell_size, sizes.facet_size);
   const auto given_maximum = get_parameter(np, internal_np::maximum_number_of_vertices);
   constexpr bool maximum_given = !std::is_same<std::decay_t<decltype(given_maximum)>, CGAL::internal_np::Param_not_found>::value;
   // (At least 10^4: Mesh_3 needs some vertices to follow any surface, however large the sizes.)

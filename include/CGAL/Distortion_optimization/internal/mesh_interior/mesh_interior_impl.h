@@ -38,6 +38,7 @@
 #include <CGAL/Distortion_optimization/internal/mesh_interior/manifold_boundary.h>
 #include <CGAL/Distortion_optimization/internal/mesh_interior/map_complex_back.h>
 #include <CGAL/Distortion_optimization/internal/mesh_interior/match_facets_to_cells.h>
+#include <CGAL/Distortion_optimization/internal/mesh_interior/mesh_size_estimate.h>
 #include <CGAL/Distortion_optimization/internal/mesh_interior/missed_components.h>
 #include <CGAL/Distortion_optimization/internal/mesh_interior/peel_flat_caps.h>
 #include <CGAL/Distortion_optimization/internal/mesh_interior/separate_touching_tetrahedra.h>
@@ -63,26 +64,6 @@
 namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
-
-// The defaults of mesh_interior(), measured on real surfaces (see mesh_interior()).
-struct Interior_mesh_defaults
-{
-  static constexpr double cells = 3e4;              // the target number of tetrahedra
-  static constexpr double volume_per_cell = 0.2;     // tetrahedron volume / cell_size^3 observed
-  static constexpr double area_per_facet = 0.3;      // boundary facet area / facet_size^2 observed
-  static constexpr double cells_per_vertex = 5.5;    // in a Delaunay tetrahedral mesh
-  static constexpr double boundary_facets = 8e3;     // at most this many boundary facets by default
-  static constexpr double distance_ratio = 0.1;      // facet_distance / facet_size
-  static constexpr double facet_angle = 25;
-  static constexpr double radius_edge_ratio = 3;
-  static constexpr double sharp_edge_angle = 60;
-  // Without exude_slivers, Mesh_3's exudation still runs on the cells with a dihedral angle below
-  // this (degrees): that costs little and removes the flattest cells (see mesh_interior()).
-  static constexpr double sliver_bound = 2;
-  // Without maximum_number_of_vertices, sizes that ask for more vertices are refused: Mesh_3 and
-  // the maps of the package take a few kilobytes a vertex (see mesh_interior()).
-  static constexpr double affordable_vertices = 2e6;
-};
 
 // What mesh_interior() read from its named parameters besides the sizes.
 struct Mesh_3_settings
@@ -146,11 +127,7 @@ inline void check_vertex_budget(const Mesh_3_settings& settings, double cell_siz
 {
   const double asked = settings.asked_vertices;
   const bool maximum_given = settings.maximum_given;
-  const std::size_t maximum_vertices = settings.maximum_vertices;
-  const double affordable = maximum_given && maximum_vertices > 0 ? double(maximum_vertices)
-                            : maximum_given                       ? 1e300
-                                                                  : Interior_mesh_defaults::affordable_vertices;
-  if(!(asked <= affordable)) {
+  if(!(asked <= affordable_vertices(maximum_given, settings.maximum_vertices))) {
     char text[160];
     std::snprintf(text, sizeof text, "about %.2g vertices, more than %s (cell size %.3g, facet size %.3g)",
                   (std::min)(asked, 1e300),
@@ -202,7 +179,8 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
   if(sizes.sharp_edge_angle < 180) domain.detect_features(sizes.sharp_edge_angle);
 
   // What Mesh_3 would not mesh, or not in bounded time and memory, is refused before it starts.
-  check_thickness_of_parts(checked, sizes.facet_size, sizes.facet_distance);
+  check_thickness_of_parts(checked, sizes.cell_size, sizes.facet_size, sizes.facet_distance,
+                           affordable_vertices(settings.maximum_given, settings.maximum_vertices));
   check_components_apart(checked, sizes.facet_distance);
   check_sharp_edges_apart(checked, sizes.sharp_edge_angle, sizes.facet_distance, sizes.edge_size);
   check_vertex_budget(settings, sizes.cell_size, sizes.facet_size);

@@ -11,12 +11,14 @@
 
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/internal/mesh_interior/checked_surface.h>
+#include <CGAL/Distortion_optimization/internal/mesh_interior/mesh_size_estimate.h>
 
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/number_utils.h>
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -34,20 +36,35 @@ namespace internal {
 // `slab` (see is_slab()) thinner than half the facet size: its sides are flat, and the facet
 // distance, which bounds the facets of a curved surface, does not refine them. Throws if the part
 // of volume `volume` and area `area`, named `what` in the message, is that thin; `lost` says what
-// Mesh_3 would not recover and `remedy` ends the message.
-inline void check_thickness(double volume, double area, bool slab, double facet_size, double facet_distance,
-                            const std::string& what, const std::string& lost, const std::string& remedy)
+// Mesh_3 would not recover and `remedy` ends the message. The facet size advised for a slab asks
+// for a mesh of its own size: the message says how large, and where that is more than
+// `affordable` vertices, that no size both recovers the slab and fits.
+inline void check_thickness(double volume, double area, bool slab, double cell_size, double facet_size,
+                            double facet_distance, double affordable, const std::string& what,
+                            const std::string& lost, const std::string& remedy)
 {
   const double thickness = 2 * volume / area;
   if((!slab || thickness >= facet_size / 2) && thickness >= facet_distance) return;
-  char text[240];
-  if(slab && thickness < facet_size / 2)
-    std::snprintf(text, sizeof text, " is thinner (2 volume / area = %.3g) than half the facet size (%.3g): Mesh_3 would not "
-                  "recover %s; give a facet size below %.3g", thickness, facet_size / 2, lost.c_str(), 2 * thickness);
-  else
+  char text[320];
+  bool meshable = true;   // at some size that fits
+  if(slab && thickness < facet_size / 2) {
+    const double advised = 2 * thickness;
+    const double asked = asked_vertices(volume, area, (std::min)(cell_size, advised), advised);
+    meshable = asked <= affordable;
+    if(meshable)
+      std::snprintf(text, sizeof text, " is thinner (2 volume / area = %.3g) than half the facet size (%.3g): Mesh_3 would not "
+                    "recover %s; give a facet size below %.3g (about %.2g vertices)", thickness, facet_size / 2,
+                    lost.c_str(), advised, asked);
+    else
+      std::snprintf(text, sizeof text, " is thinner (2 volume / area = %.3g) than half the facet size (%.3g): Mesh_3 would not "
+                    "recover %s, and a facet size that would (below %.3g) asks for about %.2g vertices, more than the "
+                    "maximum: the part is too thin to mesh", thickness, facet_size / 2, lost.c_str(), advised,
+                    (std::min)(asked, 1e300));
+  } else {
     std::snprintf(text, sizeof text, " is thinner (2 volume / area = %.3g) than the facet distance (%.3g): Mesh_3 would not "
                   "recover %s; give a facet distance below %.3g", thickness, facet_distance, lost.c_str(), thickness);
-  throw Invalid_input("mesh_interior: " + what + text + remedy);
+  }
+  throw Invalid_input("mesh_interior: " + what + text + (meshable ? remedy : std::string()));
 }
 
 // The whole volume, then each component (a cavity measured by the space it encloses): a thin
@@ -71,7 +88,8 @@ inline bool is_slab(const std::array<double, 10>& moments)
 }
 
 template <class CheckedSurface>
-void check_thickness_of_parts(const CheckedSurface& checked, double facet_size, double facet_distance)
+void check_thickness_of_parts(const CheckedSurface& checked, double cell_size, double facet_size, double facet_distance,
+                              double affordable)
 {
   const std::size_t components = checked.component_volume.size();
   std::vector<std::array<double, 10>> moments(components + 1, std::array<double, 10>{});   // the last: all
@@ -87,13 +105,13 @@ void check_thickness_of_parts(const CheckedSurface& checked, double facet_size, 
       for(int k = 0; k < 10; ++k) m[k] += w * terms[k];
     }
   }
-  check_thickness(checked.volume, checked.area, is_slab(moments[components]), facet_size, facet_distance, "the volume",
-                  "its boundary", "");
+  check_thickness(checked.volume, checked.area, is_slab(moments[components]), cell_size, facet_size, facet_distance,
+                  affordable, "the volume", "its boundary", "");
   std::vector<std::size_t> first_face(components, 0);   // of each component, to name it
   for(std::size_t g = checked.component.size(); g-- > 0;) first_face[checked.component[g]] = g;
   for(std::size_t c = 0; c < components && components > 1; ++c)
-    check_thickness(std::abs(checked.component_volume[c]), checked.component_area[c], is_slab(moments[c]), facet_size,
-                    facet_distance,
+    check_thickness(std::abs(checked.component_volume[c]), checked.component_area[c], is_slab(moments[c]), cell_size,
+                    facet_size, facet_distance, affordable,
                     "the component of the surface with face " + std::to_string(checked.face_names[first_face[c]]), "it",
                     ", or remove it");
 }
