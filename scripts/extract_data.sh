@@ -51,6 +51,8 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/nefertiti.off \
   data/meshes/three_peaks.off \
   data/meshes/bunny00.off \
+  data/meshes/holes.off \
+  data/meshes/lion.off \
   data/meshes/blobby.off \
   data/meshes/helmet.off \
   data/meshes/hand.off \

@@ -3,6 +3,7 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Distortion_optimization/global_injectivity.h>
 #include <CGAL/Distortion_optimization/initial_maps.h>
 #include <CGAL/Distortion_optimization/sliding_surfaces.h>
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
@@ -11,6 +12,7 @@
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <gtest/gtest.h>
@@ -450,6 +452,61 @@ TEST(MinimizeDistortion, ImprovesTutteParametrizationsOfRealDisks)
   }
 }
 
+
+// A disk with holes (CGAL's lion.off: one piece of genus 0, 5 borders): Tutte's start fills each
+// hole for its solve, so that no triangle flips and the borders do not cross (without the fill,
+// triangles along the holes flip); with the outer
+// border fixed and the holes free under the guard, the optimization opens the holes and keeps the
+// map one-to-one. A surface with a handle and a border is refused, and so are holes for the
+// discrete conformal start.
+TEST(MinimizeDistortion, DisksWithHolesGetAOneToOneStartAndStayOneToOne)
+{
+  Mesh3 mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("lion.off"), mesh)) << "missing " << data("lion.off");
+  std::vector<Mesh3::Halfedge_index> borders;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(borders));
+  ASSERT_GT(borders.size(), 2u);
+  auto uv = mesh.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  DO::initial_parameterization(mesh, uv);
+  EXPECT_EQ(count_flipped(mesh, uv), 0u);
+  EXPECT_TRUE(DO::is_boundary_embedded(mesh, uv));
+  auto fixed = mesh.add_property_map<Mesh3::Vertex_index, bool>("v:fixed", false).first;
+  for(auto h : CGAL::halfedges_around_face(CGAL::Polygon_mesh_processing::longest_border(mesh).first, mesh))
+    fixed[mesh.target(h)] = true;
+  const DO::Result r = CGAL::minimize_distortion(
+    mesh, uv, DO::Symmetric_dirichlet(),
+    DO::parameters::preserve_global_injectivity(true).vertex_is_constrained_map(fixed).number_of_iterations(10));
+  EXPECT_LT(r.final_energy, 0.75 * r.initial_energy);
+  EXPECT_EQ(r.inverted_cells, 0u);
+  EXPECT_EQ(count_flipped(mesh, uv), 0u);
+  EXPECT_TRUE(DO::is_boundary_embedded(mesh, uv));
+  EXPECT_THROW(DO::initial_parameterization(mesh, uv, DO::parameters::initial_map(DO::Initial_map::DISCRETE_CONFORMAL)),
+               DO::Invalid_input);
+
+  // A torus with a square hole: genus 1, one border.
+  Mesh3 torus;
+  const int m = 8, k = 6;
+  std::vector<Mesh3::Vertex_index> v;
+  for(int i = 0; i < m; ++i)
+    for(int j = 0; j < k; ++j) {
+      const double a = 2 * M_PI * i / m, b = 2 * M_PI * j / k;
+      v.push_back(torus.add_vertex(Point_3((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b))));
+    }
+  for(int i = 0; i < m; ++i)
+    for(int j = 0; j < k; ++j) {
+      if(i == 0 && j == 0) continue;   // the hole
+      const auto p = v[i * k + j], q = v[((i + 1) % m) * k + j], r2 = v[((i + 1) % m) * k + (j + 1) % k], s2 = v[i * k + (j + 1) % k];
+      torus.add_face(p, q, r2);
+      torus.add_face(p, r2, s2);
+    }
+  auto torus_uv = torus.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv").first;
+  try {
+    DO::initial_parameterization(torus, torus_uv);
+    ADD_FAILURE() << "a torus with a hole was parameterized";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh has 1 handle"), std::string::npos) << e.what();
+  }
+}
 
 // Projected Newton steps and the reweighted Laplacian's reach the same minimum of symmetric
 // Dirichlet (border fixed, and free with the guard) on a real disk.

@@ -128,12 +128,12 @@ int run_tetrahedra(const Command_line& c)
     const auto constrained = [&](const auto& optimize, const auto& held) {
       if(c.slides()) {
         const auto surface = DO::Triangle_surface::from_complex_boundary(c3t3, target_map);
-        return with_boundary_guard(c, [&](bool guard) {
+        return with_boundary_guard(c, false, [&](bool guard) {
           return optimize(DO::parameters::sliding_boundary(
             surface, DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(held)));
         });
       }
-      return with_boundary_guard(c, [&](bool guard) {
+      return with_boundary_guard(c, false, [&](bool guard) {
         return c.fix == "boundary"
           ? optimize(common_parameters(run, weights))
           : optimize(DO::parameters::preserve_global_injectivity(guard, common_parameters(run, weights)).vertex_is_constrained_map(held));

@@ -77,10 +77,11 @@ void check_same_cells(const std::string& name, const Points& source_points, cons
 // from crossing itself (global injectivity). A start whose boundary already crosses itself cannot
 // be guarded: then the run goes on without the guard, with a warning. (Sliding on the unit sphere
 // does not come here: a map of the sphere onto itself without folds is one-to-one.)
+// `free_borders`: some border is free although --fix is boundary (the holes of a disk with holes).
 template <class Run>
-DO::Result with_boundary_guard(const Command_line& c, const Run& run)
+DO::Result with_boundary_guard(const Command_line& c, bool free_borders, const Run& run)
 {
-  if(c.fix == "boundary" && !c.slides()) return run(false);
+  if(c.fix == "boundary" && !c.slides() && !free_borders) return run(false);
   try {
     return run(true);
   } catch(const DO::Crossing_start_boundary& guarded) {

@@ -55,19 +55,20 @@ Mesh to_mesh(const DO::IO::Triangle_soup& soup, const std::string& name)
 
 namespace {
 
-// One piece (a disk beside a closed torus has one border and Euler characteristic 1 too), one
-// border, Euler characteristic 1.
-bool is_disk(const Mesh& mesh)
+// The borders of a source that the tool's Tutte start takes, one piece of genus 0 with a border
+// (a disk, or a disk with holes); 0 for any other (one piece: a disk beside a closed torus has one
+// border and Euler characteristic 1 too).
+std::size_t borders_of_planar_domain(const Mesh& mesh)
 {
   std::vector<std::size_t> component(mesh.number_of_faces());
   if(CGAL::Polygon_mesh_processing::connected_components(
        mesh, boost::make_iterator_property_map(component.begin(), get(CGAL::face_index, mesh))) != 1)
-    return false;
+    return 0;
   std::vector<Mesh::Halfedge_index> cycles;
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
   const long long euler = static_cast<long long>(mesh.number_of_vertices()) - static_cast<long long>(mesh.number_of_edges()) +
                           static_cast<long long>(mesh.number_of_faces());
-  return cycles.size() == 1 && euler == 1;
+  return !cycles.empty() && euler == 2 - static_cast<long long>(cycles.size()) ? cycles.size() : 0;
 }
 
 // The bytes this process may still take: the smaller of the memory the system has available and
@@ -115,6 +116,7 @@ int run_triangles(const Command_line& c)
   for(const auto& p : source.points) planar = planar && p[2] == 0;
 
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
+  std::size_t borders = 0;   // of the source, when the tool makes the start (a disk, or a disk with holes)
   auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
   for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
   if(c.ideal()) {
@@ -149,8 +151,10 @@ int run_triangles(const Command_line& c)
       uv[Vertex(i)] = K::Point_2(target.points[i][0], target.points[i][1]);
     }
   } else {
-    if(!is_disk(mesh))
-      throw DO::Invalid_input(c.source + ": without --target the source must be a topological disk (one piece, one border, no handle)");
+    borders = borders_of_planar_domain(mesh);
+    if(borders == 0)
+      throw DO::Invalid_input(c.source + ": without --target the source must be one piece of genus 0 with a border (a "
+                              "disk, or a disk with holes)");
     DO::initial_parameterization(mesh, uv);
     // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
     // planar source listed clockwise gets its mirror image. (A surface is compared in each face's
@@ -172,7 +176,13 @@ int run_triangles(const Command_line& c)
   }
 
   auto fixed = mesh.add_property_map<Vertex, bool>("v:fixed", false).first;
-  if(c.fix == "boundary") {
+  // The Tutte start of a disk with holes maps the holes to star-shaped polygons: their borders are
+  // left free to open up, kept from crossing (the guard), and only the outer border is fixed.
+  const bool holes = borders > 1 && c.fix == "boundary";
+  if(holes) {
+    for(auto h : CGAL::halfedges_around_face(CGAL::Polygon_mesh_processing::longest_border(mesh).first, mesh))
+      fixed[mesh.target(h)] = true;
+  } else if(c.fix == "boundary") {
     for(Vertex v : mesh.vertices()) fixed[v] = mesh.is_border(v);
   } else if(c.fix != "none") {
     const auto list = DO::IO::read_vertex_list(c.fix, mesh.number_of_vertices());
@@ -190,7 +200,7 @@ int run_triangles(const Command_line& c)
   const DO::Mesh_quality before = c.ideal() ? DO::mesh_quality(mesh, uv) : DO::Mesh_quality();
   const DO::Any_measure measure = measure_of(c);
   measure_name = measure.name();
-  const DO::Result r = with_boundary_guard(c, [&](bool guard) {
+  const DO::Result r = with_boundary_guard(c, holes, [&](bool guard) {
     auto np = DO::parameters::preserve_global_injectivity(guard, common_parameters(c, weights)).vertex_is_constrained_map(fixed);
     if(c.ideal()) return DO::improve_mesh_quality(mesh, uv, measure, np);
     // A planar source is compared in its own plane (so its orientation counts), a surface in

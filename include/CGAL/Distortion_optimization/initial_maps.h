@@ -19,6 +19,7 @@
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -67,10 +68,13 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(border_shape_t, border_shape)
 
 namespace internal {
 
-// The longest border of tm, after checking that tm is one piece with a border (CGAL's
-// parameterizers map the piece of the border only: the others would stay where uv had them).
+// The longest border of tm, after checking that tm is one piece of genus 0 with a border: a disk,
+// or a disk with holes, whose other borders `holes` receives (one halfedge of each, if given).
+// (CGAL's parameterizers map the piece of the border only: the others would stay where uv had
+// them; on a surface with handles no map to the plane is one-to-one.)
 template <class TriangleMesh>
-typename boost::graph_traits<TriangleMesh>::halfedge_descriptor longest_border_of_disk(const TriangleMesh& tm)
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor longest_border_of_disk(
+  const TriangleMesh& tm, std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>* holes = nullptr)
 {
   if(num_faces(tm) == 0)
     throw Invalid_input("the mesh has no face");
@@ -82,6 +86,24 @@ typename boost::graph_traits<TriangleMesh>::halfedge_descriptor longest_border_o
   const auto border = CGAL::Polygon_mesh_processing::longest_border(tm).first;
   if(border == boost::graph_traits<TriangleMesh>::null_halfedge())
     throw Invalid_input("the mesh has no border: a disk (genus 0, one border) is needed to parameterize it");
+  std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(tm, std::back_inserter(cycles));
+  // V - E + F = 2 - 2 genus - borders on one piece (isolated vertices are not part of it).
+  long long used_vertices = 0;
+  for(auto v : vertices(tm)) used_vertices += halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge();
+  const long long euler = used_vertices - static_cast<long long>(num_edges(tm)) + static_cast<long long>(num_faces(tm));
+  const long long genus = (2 - euler - static_cast<long long>(cycles.size())) / 2;
+  if(genus != 0)
+    throw Invalid_input("the mesh has " + std::to_string(genus) + " handle" + (genus == 1 ? "" : "s") +
+                        ": a disk, or a disk with holes (genus 0), is needed to parameterize it");
+  if(holes) {
+    holes->clear();
+    for(auto h : cycles) {
+      bool outer = false;
+      for(auto g : CGAL::halfedges_around_face(h, tm)) outer = outer || g == border;
+      if(!outer) holes->push_back(h);
+    }
+  }
   return border;
 }
 
@@ -89,7 +111,11 @@ template <class TriangleMesh, class UVMap, class Parameterizer>
 void run_parameterizer(const TriangleMesh& tm, UVMap uv, const Parameterizer& parameterizer)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
-  const auto border = longest_border_of_disk(tm);
+  std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> holes;
+  const auto border = longest_border_of_disk(tm, &holes);
+  if(!holes.empty())
+    throw Invalid_input("the mesh has " + std::to_string(holes.size() + 1) + " borders: the discrete conformal start "
+                        "needs a disk (one border); Tutte's start takes holes");
   // CGAL's parameterizers take a non-const mesh but do not modify it.
   const SMP::Error_code status = SMP::parameterize(const_cast<TriangleMesh&>(tm), parameterizer, border, uv);
   if(status != SMP::OK)
@@ -106,7 +132,8 @@ void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterize
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using Point_2 = typename boost::property_traits<UVMap>::value_type;
-  const auto border = longest_border_of_disk(tm);
+  std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> holes;
+  const auto border = longest_border_of_disk(tm, &holes);
   const auto index = get(CGAL::dynamic_vertex_property_t<int>(), tm);
   const auto placed = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex;
@@ -133,6 +160,22 @@ void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterize
     for(auto w : CGAL::vertices_around_target(halfedge(vertex[i], tm), tm))
       neighbours[i].push_back(static_cast<std::uint32_t>(get(index, w)));
   }
+  // A disk with holes: each hole filled, for the solve only, by a vertex of its own joined to the
+  // hole's border, so that the system is Tutte's of a triangulated disk, whose map is one-to-one
+  // (Floater, "One-to-one piecewise linear mappings over triangulations", 2003); without the
+  // fill, a hole's border vertices would lack the neighbours that hold them apart. The holes' map
+  // is then a star-shaped polygon about each fill vertex, dropped after the solve.
+  for(auto h : holes) {
+    const auto fill = static_cast<std::uint32_t>(neighbours.size());
+    neighbours.emplace_back();
+    column.push_back(size++);
+    x.push_back(Vector<2>::Zero());
+    for(auto g : CGAL::halfedges_around_face(h, tm)) {
+      const auto i = static_cast<std::uint32_t>(get(index, target(g, tm)));
+      neighbours[i].push_back(fill);
+      neighbours[fill].push_back(i);
+    }
+  }
   if(!barycentric_positions(neighbours, column, size, x))
     throw Invalid_input(std::string("the parameterization failed: ") + SMP::get_error_message(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM));
   for(std::size_t i = 0; i < vertex.size(); ++i)
@@ -143,7 +186,8 @@ void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterize
 
 /// \ingroup PkgDistortionOptimizationRef
 /// Writes into `uv` (a vertex property map to `Point_2`) a fixed-border parameterization of the
-/// disk `tm` (a `FaceListGraph` of triangles with one border): the longest border is mapped to a
+/// disk `tm` (a `FaceListGraph` of triangles with one border), or of a disk with holes (one piece
+/// of genus 0 with several borders): the longest border is mapped to a
 /// circle or a square by arc length (named parameter `Distortion_optimization::parameters::border_shape()`,
 /// default a circle), the inner vertices by the `Initial_map` given as
 /// `Distortion_optimization::parameters::initial_map()` (default Tutte's); then the map is scaled about
@@ -153,8 +197,12 @@ void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterize
 /// triangles of a Tutte map are then all positively oriented, a valid start for
 /// `CGAL::minimize_distortion()`. Coordinates of any magnitude
 /// are accepted: a mesh far from unit size is parameterized scaled by a power of two.
-/// \throws Invalid_input if `tm` is empty, has several connected components or no border, or CGAL's
-/// parameterizer fails (e.g. the mesh is not a topological disk).
+/// With holes, Tutte's map is that of the disk whose every hole is filled by a fan about one added
+/// vertex (for the solve only; `tm` is not modified): the holes' borders are mapped to star-shaped
+/// polygons and the map is one-to-one. Free their vertices, with
+/// `preserve_global_injectivity`, for `CGAL::minimize_distortion()` to open the holes up.
+/// \throws Invalid_input if `tm` is empty, has several connected components, no border or a handle,
+/// if it has holes and the start is not Tutte's, or if CGAL's parameterizer fails.
 template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParameters& np = CGAL::parameters::default_values())
 {

@@ -294,6 +294,25 @@ TEST(CommandLine, TutteStartForADiskWithoutTarget)
   EXPECT_EQ(IO::read_triangle_soup(o).cells, IO::read_triangle_soup(data("nefertiti.off")).cells);
 }
 
+// A disk with holes (CGAL's holes.off, 7 borders) gets the Tutte start of the disk with its holes
+// filled, its holes freed under the guard with the default --fix, or all its borders with --fix
+// none: no triangle inverted, no border crossing another, the outer border where the start put it.
+TEST(CommandLine, TutteStartForADiskWithHoles)
+{
+  const IO::Triangle_soup source = IO::read_triangle_soup(data("holes.off"));
+  for(const std::string fix : {"boundary", "none"}) {
+    const std::string o = temp("holes_uv_" + fix + ".off"), r = temp("holes_" + fix + ".json");
+    const Tool_run result = run("--source " + data("holes.off") + " --output " + o + " --flat-output " + temp("holes_flat.off") +
+                                " --measure symmetric_dirichlet --fix " + fix + " --report " + r);
+    ASSERT_EQ(result.status, 0) << result.output;
+    EXPECT_EQ(json_value(slurp(r), "inverted_cells"), 0) << fix;
+    EXPECT_LT(json_value(slurp(r), "final_energy"), 0.75 * json_value(slurp(r), "initial_energy")) << fix;
+    const IO::Triangle_soup flat = IO::read_triangle_soup(temp("holes_flat.off"));
+    EXPECT_EQ(flat.cells, source.cells);
+    EXPECT_EQ(border_crossings(flat), 0u) << fix;
+  }
+}
+
 // The triangles of a planar soup that are not counterclockwise (exact predicate).
 static std::size_t inverted(const IO::Triangle_soup& soup)
 {
@@ -841,7 +860,7 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   const std::string disk_and_closed = temp("disk_and_closed.off");
   std::ofstream(disk_and_closed) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
                                     "3 0 1 2\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n";
-  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1, "must be a topological disk (one piece");
+  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1, "must be one piece of genus 0 with a border (a disk, or a disk with holes)");
   // Its closed piece mapped into the plane: no untangling can help, and the messages say why.
   const std::string flat = temp("disk_and_closed_flat.off");
   std::ofstream(flat) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5.3 0.3 0\n"
