@@ -14,6 +14,7 @@
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <gtest/gtest.h>
 
@@ -286,7 +287,7 @@ TEST(MinimizeDistortion, ADiskBesideAClosedSurfaceAndANeedleAreRefusedAsSuch)
     }
     return std::string("no error");
   };
-  EXPECT_NE(message([&] { DO::initial_parameterization(mesh, uv); }).find("the mesh has 2 connected components"), std::string::npos);
+  EXPECT_NE(message([&] { DO::initial_parameterization(mesh, uv); }).find("piece 2 of 2: the mesh has no border"), std::string::npos);
 
   // Its closed piece flattened (vertex 6 inside the image of the others): some of its triangles
   // are inverted, and must be.
@@ -482,6 +483,16 @@ TEST(MinimizeDistortion, DisksWithHolesGetAOneToOneStartAndStayOneToOne)
   EXPECT_TRUE(DO::is_boundary_embedded(mesh, uv));
   EXPECT_THROW(DO::initial_parameterization(mesh, uv, DO::parameters::initial_map(DO::Initial_map::DISCRETE_CONFORMAL)),
                DO::Invalid_input);
+
+  // Two pieces, the disk with holes and a disk (nefertiti.off, moved onto it): each its own start,
+  // side by side, so that no triangle flips and no border crosses another.
+  Mesh3 two = mesh, disk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("nefertiti.off"), disk));
+  CGAL::copy_face_graph(disk, two);
+  auto two_uv = two.add_property_map<Mesh3::Vertex_index, Point_2>("v:uv2").first;
+  DO::initial_parameterization(two, two_uv);
+  EXPECT_EQ(count_flipped(two, two_uv), 0u);
+  EXPECT_TRUE(DO::is_boundary_embedded(two, two_uv));
 
   // A torus with a square hole: genus 1, one border.
   Mesh3 torus;

@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
 #include <array>
@@ -55,20 +56,31 @@ Mesh to_mesh(const DO::IO::Triangle_soup& soup, const std::string& name)
 
 namespace {
 
-// The borders of a source that the tool's Tutte start takes, one piece of genus 0 with a border
-// (a disk, or a disk with holes); 0 for any other (one piece: a disk beside a closed torus has one
-// border and Euler characteristic 1 too).
-std::size_t borders_of_planar_domain(const Mesh& mesh)
+// Whether the tool's Tutte start takes the source: every piece of genus 0 with a border (a disk,
+// or a disk with holes; a disk beside a closed torus has the Euler characteristic of two disks,
+// hence the borders counted per piece). Returns the number of borders (0 if it does not take it)
+// and a halfedge of each piece's longest border in `longest`.
+std::size_t borders_of_planar_domain(const Mesh& mesh, std::vector<Mesh::Halfedge_index>& longest)
 {
-  std::vector<std::size_t> component(mesh.number_of_faces());
-  if(CGAL::Polygon_mesh_processing::connected_components(
-       mesh, boost::make_iterator_property_map(component.begin(), get(CGAL::face_index, mesh))) != 1)
-    return 0;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<std::size_t> piece(mesh.number_of_faces());
+  const std::size_t pieces = PMP::connected_components(mesh, boost::make_iterator_property_map(piece.begin(), get(CGAL::face_index, mesh)));
   std::vector<Mesh::Halfedge_index> cycles;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  longest.assign(pieces, Mesh::null_halfedge());
+  std::vector<double> length(pieces, -1);
+  for(Mesh::Halfedge_index h : cycles) {
+    const std::size_t k = piece[std::size_t(mesh.face(mesh.opposite(h)))];
+    double l = 0;
+    for(auto g : CGAL::halfedges_around_face(h, mesh)) l += PMP::edge_length(g, mesh);
+    if(l > length[k]) length[k] = l, longest[k] = h;
+  }
   const long long euler = static_cast<long long>(mesh.number_of_vertices()) - static_cast<long long>(mesh.number_of_edges()) +
                           static_cast<long long>(mesh.number_of_faces());
-  return !cycles.empty() && euler == 2 - static_cast<long long>(cycles.size()) ? cycles.size() : 0;
+  const bool every_piece_has_a_border =
+    std::find(longest.begin(), longest.end(), Mesh::null_halfedge()) == longest.end();
+  return every_piece_has_a_border && euler == 2 * static_cast<long long>(pieces) - static_cast<long long>(cycles.size())
+           ? cycles.size() : 0;
 }
 
 // The bytes this process may still take: the smaller of the memory the system has available and
@@ -116,7 +128,9 @@ int run_triangles(const Command_line& c)
   for(const auto& p : source.points) planar = planar && p[2] == 0;
 
   auto uv = mesh.add_property_map<Vertex, K::Point_2>("v:target").first;
-  std::size_t borders = 0;   // of the source, when the tool makes the start (a disk, or a disk with holes)
+  // Where the tool makes the start: the source's borders, and each piece's longest.
+  std::size_t borders = 0;
+  std::vector<Mesh::Halfedge_index> outer;
   auto source_2 = mesh.add_property_map<Vertex, K::Point_2>("v:source_2").first;
   for(Vertex v : mesh.vertices()) source_2[v] = K::Point_2(mesh.point(v).x(), mesh.point(v).y());
   if(c.ideal()) {
@@ -151,10 +165,10 @@ int run_triangles(const Command_line& c)
       uv[Vertex(i)] = K::Point_2(target.points[i][0], target.points[i][1]);
     }
   } else {
-    borders = borders_of_planar_domain(mesh);
+    borders = borders_of_planar_domain(mesh, outer);
     if(borders == 0)
-      throw DO::Invalid_input(c.source + ": without --target the source must be one piece of genus 0 with a border (a "
-                              "disk, or a disk with holes)");
+      throw DO::Invalid_input(c.source + ": without --target every piece of the source must be of genus 0 with a border "
+                              "(a disk, or a disk with holes)");
     DO::initial_parameterization(mesh, uv);
     // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
     // planar source listed clockwise gets its mirror image. (A surface is compared in each face's
@@ -178,10 +192,10 @@ int run_triangles(const Command_line& c)
   auto fixed = mesh.add_property_map<Vertex, bool>("v:fixed", false).first;
   // The Tutte start of a disk with holes maps the holes to star-shaped polygons: their borders are
   // left free to open up, kept from crossing (the guard), and only the outer border is fixed.
-  const bool holes = borders > 1 && c.fix == "boundary";
+  const bool holes = borders > outer.size() && c.fix == "boundary";
   if(holes) {
-    for(auto h : CGAL::halfedges_around_face(CGAL::Polygon_mesh_processing::longest_border(mesh).first, mesh))
-      fixed[mesh.target(h)] = true;
+    for(Mesh::Halfedge_index longest : outer)
+      for(auto h : CGAL::halfedges_around_face(longest, mesh)) fixed[mesh.target(h)] = true;
   } else if(c.fix == "boundary") {
     for(Vertex v : mesh.vertices()) fixed[v] = mesh.is_border(v);
   } else if(c.fix != "none") {

@@ -17,6 +17,7 @@
 #include <CGAL/Distortion_optimization/internal/simplicial_map.h>
 #include <CGAL/Distortion_optimization/internal/tutte_embedding.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -65,6 +66,10 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(initial_map_t, initial_map)
 /// `Border_shape::CIRCLE`.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(border_shape_t, border_shape)
 } // namespace parameters
+
+// (Declared for the pieces of a mesh, each parameterized alone: see below.)
+template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParameters& np = CGAL::parameters::default_values());
 
 namespace internal {
 
@@ -182,6 +187,64 @@ void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterize
     if(column[i] >= 0) put(uv, vertex[i], Point_2(x[i][0], x[i][1]));
 }
 
+// For a mesh in several pieces: each piece's start map on a copy of it (one piece, so that the
+// caller's checks and start apply to it alone), the maps placed left to right in a row, apart by a
+// tenth of the widest, so that no two pieces overlap; true if tm has several pieces (done).
+template <class TriangleMesh, class UVMap>
+bool parameterize_pieces(const TriangleMesh& tm, UVMap uv, Initial_map kind, Border_shape border)
+{
+  using Point_3 = typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+  using Point_2 = typename boost::property_traits<UVMap>::value_type;
+  using Piece = CGAL::Surface_mesh<Point_3>;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const auto piece_of = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  const std::size_t pieces = num_faces(tm) == 0 ? 0 : CGAL::Polygon_mesh_processing::connected_components(tm, piece_of);
+  if(pieces < 2) return false;
+  std::vector<Piece> copy(pieces);
+  std::vector<std::vector<vertex_descriptor>> original(pieces);
+  const auto in_piece = get(CGAL::dynamic_vertex_property_t<typename Piece::Vertex_index>(), tm);
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for(auto v : vertices(tm)) put(in_piece, v, Piece::null_vertex());
+  for(auto f : faces(tm)) {
+    const std::size_t k = get(piece_of, f);
+    std::vector<typename Piece::Vertex_index> corners;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if(get(in_piece, v) == Piece::null_vertex()) {
+        put(in_piece, v, copy[k].add_vertex(get(vpm, v)));
+        original[k].push_back(v);
+      }
+      corners.push_back(get(in_piece, v));
+    }
+    copy[k].add_face(corners);
+  }
+  std::vector<std::vector<Vector<2>>> map(pieces);
+  std::vector<CGAL::Bbox_2> box(pieces);
+  double widest = 0;
+  for(std::size_t k = 0; k < pieces; ++k) {
+    auto piece_uv = copy[k].template add_property_map<typename Piece::Vertex_index, Point_2>("v:uv").first;
+    try {
+      initial_parameterization(copy[k], piece_uv, parameters::initial_map(kind, parameters::border_shape(border)));
+    } catch(const Invalid_input& e) {
+      throw Invalid_input("piece " + std::to_string(k + 1) + " of " + std::to_string(pieces) + ": " + e.what());
+    }
+    for(auto v : copy[k].vertices()) {
+      map[k].emplace_back(CGAL::to_double(piece_uv[v].x()), CGAL::to_double(piece_uv[v].y()));
+      box[k] += CGAL::Bbox_2(map[k].back()[0], map[k].back()[1], map[k].back()[0], map[k].back()[1]);
+    }
+    widest = (std::max)(widest, box[k].x_span());
+  }
+  double left = 0;
+  for(std::size_t k = 0; k < pieces; ++k) {
+    const Vector<2> shift(left - box[k].xmin(), -0.5 * (box[k].ymin() + box[k].ymax()));
+    for(std::size_t i = 0; i < original[k].size(); ++i) {
+      const Vector<2> p = map[k][i] + shift;
+      put(uv, original[k][i], Point_2(p[0], p[1]));
+    }
+    left += box[k].x_span() + 0.1 * widest;
+  }
+  return true;
+}
+
 } // namespace internal
 
 /// \ingroup PkgDistortionOptimizationRef
@@ -201,10 +264,12 @@ void tutte_parameterization(const TriangleMesh& tm, UVMap uv, BorderParameterize
 /// vertex (for the solve only; `tm` is not modified): the holes' borders are mapped to star-shaped
 /// polygons and the map is one-to-one. Free their vertices, with
 /// `preserve_global_injectivity`, for `CGAL::minimize_distortion()` to open the holes up.
-/// \throws Invalid_input if `tm` is empty, has several connected components, no border or a handle,
-/// if it has holes and the start is not Tutte's, or if CGAL's parameterizer fails.
-template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
-void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParameters& np = CGAL::parameters::default_values())
+/// A mesh in several pieces gets each piece's map (each a disk or a disk with holes, parameterized
+/// alone), the maps placed left to right in a row, apart by a tenth of the widest: no two overlap.
+/// \throws Invalid_input if `tm` is empty, if a piece has no border or a handle, if a piece has
+/// holes and the start is not Tutte's, or if CGAL's parameterizer fails.
+template <class TriangleMesh, class UVMap, class NamedParameters>
+void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParameters& np)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using CGAL::parameters::choose_parameter;
@@ -213,6 +278,7 @@ void initial_parameterization(const TriangleMesh& tm, UVMap uv, const NamedParam
   const Border_shape border = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::CIRCLE);
   using Point_3 = typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using Point_2 = typename boost::property_traits<UVMap>::value_type;
+  if(internal::parameterize_pieces(tm, uv, kind, border)) return;
   // CGAL's parameterizers square lengths, and the area below squares areas: far from unit size they
   // overflow or underflow. Such a mesh is parameterized as a copy scaled by the adapters' power of
   // two (exact), and the map scaled back.

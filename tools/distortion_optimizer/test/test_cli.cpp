@@ -313,6 +313,30 @@ TEST(CommandLine, TutteStartForADiskWithHoles)
   }
 }
 
+// A source in pieces (a disk with holes and a disk, in one file) gets each piece's Tutte start,
+// side by side: with the holes free (default --fix) or every border free (--fix none), no triangle
+// inverted and no border crossing another, within a piece or between them.
+TEST(CommandLine, TutteStartForSeveralPieces)
+{
+  IO::Triangle_soup two = IO::read_triangle_soup(data("holes.off"));
+  const IO::Triangle_soup disk = IO::read_triangle_soup(data("nefertiti.off"));
+  const std::size_t offset = two.points.size();
+  for(auto p : disk.points) two.points.push_back({p[0] + 1000, p[1], p[2]});
+  for(const auto& t : disk.cells) two.cells.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const std::string s = temp("two_pieces.off");
+  IO::write_triangle_soup(s, two);
+  for(const std::string fix : {"boundary", "none"}) {
+    const std::string flat = temp("two_pieces_flat_" + fix + ".off");
+    const Tool_run result = run("--source " + s + " --output " + temp("two_pieces_uv.obj") + " --flat-output " + flat +
+                                " --measure symmetric_dirichlet --fix " + fix);
+    ASSERT_EQ(result.status, 0) << result.output;
+    EXPECT_NE(result.output.find("inverted_cells  0"), std::string::npos) << result.output;
+    const IO::Triangle_soup out = IO::read_triangle_soup(flat);
+    EXPECT_EQ(out.cells, two.cells);
+    EXPECT_EQ(border_crossings(out), 0u) << fix;
+  }
+}
+
 // The triangles of a planar soup that are not counterclockwise (exact predicate).
 static std::size_t inverted(const IO::Triangle_soup& soup)
 {
@@ -860,7 +884,7 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   const std::string disk_and_closed = temp("disk_and_closed.off");
   std::ofstream(disk_and_closed) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
                                     "3 0 1 2\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n";
-  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1, "must be one piece of genus 0 with a border (a disk, or a disk with holes)");
+  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1, "every piece of the source must be of genus 0 with a border (a disk, or a disk with holes)");
   // Its closed piece mapped into the plane: no untangling can help, and the messages say why.
   const std::string flat = temp("disk_and_closed_flat.off");
   std::ofstream(flat) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5.3 0.3 0\n"
