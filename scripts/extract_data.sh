@@ -58,6 +58,9 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/hand.off \
   data/meshes/dino.off \
   data/meshes/pig.stl \
+  data/meshes/eight.off \
+  data/meshes/knot1.off \
+  data/meshes/sphere.off \
   data/meshes/sphere.ply \
   data/meshes/sphere.stl
 

@@ -166,9 +166,8 @@ int run_triangles(const Command_line& c)
     }
   } else {
     borders = borders_of_planar_domain(mesh, outer);
-    if(borders == 0)
-      throw DO::Invalid_input(c.source + ": without --target every piece of the source must be of genus 0 with a border "
-                              "(a disk, or a disk with holes)");
+    // A closed piece or a handle: no one map to the plane, but an atlas (cut, flattened, packed).
+    if(borders == 0) return run_atlas(c, source, mesh);
     DO::initial_parameterization(mesh, uv);
     // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
     // planar source listed clockwise gets its mirror image. (A surface is compared in each face's

@@ -64,22 +64,22 @@ bool is_boundary_embedded(const TriangleMesh& tm, const TargetMap& target,
 {
   using Guard = internal::Boundary_guard<2>;
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
-  std::vector<std::array<std::uint32_t, 3>> faces;
-  for(auto f : CGAL::faces(tm)) {
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for(auto f : faces(tm)) {
     std::array<std::uint32_t, 3> t;
     int i = 0;
-    for(auto v : CGAL::vertices_around_face(CGAL::halfedge(f, tm), tm)) {
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
       if(i == 3) throw Invalid_input("is_boundary_embedded(): a face is not a triangle");
       t[i++] = static_cast<std::uint32_t>(get(index, v));
     }
-    faces.push_back(t);
+    triangles.push_back(t);
   }
-  std::vector<internal::Vector<2>> x(CGAL::num_vertices(tm));
-  for(auto v : CGAL::vertices(tm)) {
+  std::vector<internal::Vector<2>> x(num_vertices(tm));
+  for(auto v : vertices(tm)) {
     const auto& p = get(target, v);
     x[get(index, v)] = internal::Vector<2>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
   }
-  return Guard(Guard::boundary_faces(faces), x.size(), internal::connected_pieces(faces, x.size())).is_injective(x);
+  return Guard(Guard::boundary_faces(triangles), x.size(), internal::connected_pieces(triangles, x.size())).is_injective(x);
 }
 
 } // namespace Distortion_optimization

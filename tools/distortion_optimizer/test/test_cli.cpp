@@ -337,6 +337,40 @@ TEST(CommandLine, TutteStartForSeveralPieces)
   }
 }
 
+// A closed surface of genus 2 (CGAL's eight.off) without --target: an atlas, written as OBJ with
+// the source's vertices in order, one vt per UV corner and the source's faces; every UV triangle
+// counterclockwise (exact) and in the unit square; the report's atlas fields.
+TEST(CommandLine, AnAtlasForAClosedSurface)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const IO::Triangle_soup source = IO::read_triangle_soup(data("eight.off"));
+  const std::string o = temp("eight_atlas.obj"), r = temp("eight_atlas.json");
+  const Tool_run result = run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --report " + r +
+                              " --svg " + temp("eight_atlas.svg"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  const IO::Triangle_soup atlas = IO::read_triangle_soup(o);
+  EXPECT_EQ(atlas.points, source.points);
+  EXPECT_EQ(atlas.cells, source.cells);
+  ASSERT_EQ(atlas.cell_texture_indices.size(), source.cells.size());
+  EXPECT_GT(atlas.texture_coordinates.size(), source.points.size());   // the seams' vertices have two UVs or more
+  for(const auto& t : atlas.cell_texture_indices) {
+    std::array<K::Point_2, 3> p;
+    for(int i = 0; i < 3; ++i) {
+      const auto& uv = atlas.texture_coordinates.at(t[i]);
+      p[i] = K::Point_2(uv[0], uv[1]);
+      EXPECT_TRUE(uv[0] >= 0 && uv[0] <= 1 && uv[1] >= 0 && uv[1] <= 1);
+    }
+    EXPECT_EQ(CGAL::orientation(p[0], p[1], p[2]), CGAL::LEFT_TURN);
+  }
+  const std::string report = slurp(r);
+  EXPECT_EQ(json_value(report, "charts"), 1);
+  EXPECT_EQ(json_value(report, "inverted_cells"), 0);
+  EXPECT_EQ(json_value(report, "overlapping_charts"), 0);
+  EXPECT_GT(json_value(report, "seam_length_fraction"), 0);
+  EXPECT_LT(json_value(report, "final_energy"), 1.1);
+  EXPECT_TRUE(test_files::exists(temp("eight_atlas.svg")));
+}
+
 // The triangles of a planar soup that are not counterclockwise (exact predicate).
 static std::size_t inverted(const IO::Triangle_soup& soup)
 {
@@ -884,7 +918,10 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
   const std::string disk_and_closed = temp("disk_and_closed.off");
   std::ofstream(disk_and_closed) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5 0 1\n"
                                     "3 0 1 2\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n";
-  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1, "every piece of the source must be of genus 0 with a border (a disk, or a disk with holes)");
+  expect_failure("--source " + disk_and_closed + " --output " + o + " --measure arap", 1,
+                 "has a closed piece or a handle, so its map to the plane is an atlas with seams, whose UVs are per corner: give an .obj output");
+  expect_failure("--source " + disk_and_closed + " --output " + temp("atlas.obj") + " --subdivide 1 --subdivided-source " + temp("atlas_fine.off"), 1,
+                 "--subdivide does not apply to it");
   // Its closed piece mapped into the plane: no untangling can help, and the messages say why.
   const std::string flat = temp("disk_and_closed_flat.off");
   std::ofstream(flat) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5.3 0.3 0\n"

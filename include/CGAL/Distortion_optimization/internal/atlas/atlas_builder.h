@@ -1,0 +1,253 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The atlas of a triangle surface, on flat arrays: its pieces, each cut open along seams into a
+// chart of genus 0, each chart flattened without overlap, then all packed into the unit square.
+// Atlas_builder::run() lists the steps; compute_atlas() (atlas.h) translates a CGAL mesh to and
+// from these arrays.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_ATLAS_BUILDER_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_ATLAS_BUILDER_H
+
+#include <CGAL/license/Distortion_optimization.h>
+
+#include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/global_injectivity.h>
+#include <CGAL/Distortion_optimization/initial_maps.h>
+#include <CGAL/Distortion_optimization/internal/atlas/cones.h>
+#include <CGAL/Distortion_optimization/internal/atlas/cut_graph.h>
+#include <CGAL/Distortion_optimization/internal/atlas/cut_mesh.h>
+#include <CGAL/Distortion_optimization/internal/atlas/pack_charts.h>
+#include <CGAL/compute_distortion.h>
+#include <CGAL/minimize_distortion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+struct Atlas_options
+{
+  double max_log_scale = 1;           // the cones' bound on the conformal flattening's log scale
+  double max_distortion = 0;          // a chart's mean distortion above it cuts further (0: no bound)
+  double gutter = 0.01;               // between charts, a fraction of the square's side
+  std::size_t iterations = 100;       // of each chart's minimize_distortion()
+  int threads = 1;
+};
+
+// What the atlas has: each face's chart and its corners' UVs, the seams, and the figures.
+struct Atlas_arrays
+{
+  std::vector<std::array<std::array<double, 2>, 3>> corner_uv;   // by face, in the corners' order
+  std::vector<std::size_t> chart;                                // by face
+  std::vector<double> face_distortion;                           // by face
+  std::vector<std::array<std::uint32_t, 2>> seam_edges;          // the seams as vertex pairs
+  std::size_t charts = 0, cones = 0;
+  double seam_length = 0, edge_length = 0, packing_efficiency = 0;
+  double mean_distortion = 0, max_distortion = 0;   // area-weighted mean over the surface; largest of a face
+  std::size_t inverted_faces = 0, overlapping_charts = 0, iterations = 0;
+};
+
+template <class Measure>
+class Atlas_builder
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<K::Point_3>;
+  using Vertex = Mesh::Vertex_index;
+
+public:
+  Atlas_builder(const std::vector<std::array<double, 3>>& points, const std::vector<std::array<std::uint32_t, 3>>& faces,
+                const Measure& measure, const Atlas_options& options)
+    : points_(points), faces_(faces), measure_(measure), options_(options)
+  {}
+
+  Atlas_arrays run()
+  {
+    split_into_pieces();
+    for(std::size_t k = 0; k < pieces_.size(); ++k) {
+      Piece& piece = pieces_[k];
+      piece.seam = handle_seams(piece.mesh);
+      for(double bound = options_.max_log_scale;; bound *= 0.5) {
+        add_cone_seams(piece, bound);
+        cut_open(piece);
+        flatten(piece);
+        if(!(options_.max_distortion > 0) || piece.mean <= options_.max_distortion || bound < 0.05) break;
+      }
+    }
+    pack();
+    return collect();
+  }
+
+private:
+  struct Piece
+  {
+    Mesh mesh;                                      // the piece alone, its faces in input order
+    std::vector<std::size_t> face;                  // the input face of each
+    std::vector<std::uint32_t> vertex;              // the input vertex of each
+    std::vector<bool> seam;                         // by edge of `mesh`
+    std::size_t cones = 0;
+    Mesh chart;                                     // the piece cut open
+    std::vector<std::array<std::uint32_t, 3>> corner;   // the chart's vertex at each corner of each face
+    std::vector<Vector<2>> uv;                      // by chart vertex
+    std::vector<double> value;                      // the measure's value on each face
+    double area = 0, uv_area = 0, mean = 0, max = 0;
+    std::size_t inverted = 0, iterations = 0;
+    bool embedded = true;
+  };
+
+  // The input's connected pieces, each its own Surface_mesh; bad input refused with the face.
+  void split_into_pieces()
+  {
+    Mesh all;
+    for(const auto& p : points_) all.add_vertex(K::Point_3(p[0], p[1], p[2]));
+    for(std::size_t f = 0; f < faces_.size(); ++f)
+      if(all.add_face(Vertex(faces_[f][0]), Vertex(faces_[f][1]), Vertex(faces_[f][2])) == Mesh::null_face())
+        throw Invalid_input("face " + std::to_string(f) + " makes the surface non-manifold or inconsistently oriented");
+    auto piece_of = all.add_property_map<Mesh::Face_index, std::size_t>("f:piece").first;
+    const std::size_t n = faces_.empty() ? 0 : CGAL::Polygon_mesh_processing::connected_components(all, piece_of);
+    if(n == 0) throw Invalid_input("the surface has no face");
+    pieces_.resize(n);
+    std::vector<std::uint32_t> local(points_.size(), std::uint32_t(-1));
+    std::vector<std::size_t> owner(points_.size(), n);
+    for(std::size_t f = 0; f < faces_.size(); ++f) {
+      Piece& piece = pieces_[piece_of[Mesh::Face_index(std::uint32_t(f))]];
+      std::array<Vertex, 3> t;
+      for(int i = 0; i < 3; ++i) {
+        const std::uint32_t v = faces_[f][i];
+        if(owner[v] != std::size_t(&piece - pieces_.data())) {
+          owner[v] = std::size_t(&piece - pieces_.data());
+          local[v] = std::uint32_t(piece.mesh.add_vertex(all.point(Vertex(v))));
+          piece.vertex.push_back(v);
+        }
+        t[i] = Vertex(local[v]);
+      }
+      piece.mesh.add_face(t[0], t[1], t[2]);
+      piece.face.push_back(f);
+    }
+  }
+
+  // Seams from the cones to the seams there are (Atlas_options::max_log_scale).
+  void add_cone_seams(Piece& piece, double bound)
+  {
+    const std::vector<Vertex> cones = place_cones(piece.mesh, piece.seam, bound, 64);
+    for(std::size_t i = 0; i < cones.size(); ++i)
+      add_seam_to(piece.mesh, cones[i], cones[i == 0 ? (cones.size() > 1 ? 1 : 0) : 0], piece.seam);
+    piece.cones += cones.size();
+  }
+
+  void cut_open(Piece& piece) { piece.chart = cut_along(piece.mesh, piece.seam, piece.corner); }
+
+  // The chart's Tutte start (its longest border on a circle, its holes filled for the solve), then
+  // the measure minimized with every vertex free. The border is kept from crossing itself: a run
+  // without the guard is kept where it does not cross (its Newton steps are not shortened), and
+  // the guarded run is made where it does.
+  void flatten(Piece& piece)
+  {
+    Mesh& chart = piece.chart;
+    auto uv = chart.add_property_map<Vertex, K::Point_2>("v:uv").first;
+    auto free = chart.add_property_map<Vertex, bool>("v:constrained", false).first;
+    auto value = chart.add_property_map<Mesh::Face_index, double>("f:distortion").first;
+    Result r;
+    for(bool guard : {false, true}) {
+      initial_parameterization(chart, uv);
+      r = CGAL::minimize_distortion(chart, uv, measure_,
+                                    parameters::number_of_threads(options_.threads, parameters::preserve_global_injectivity(guard))
+                                      .vertex_is_constrained_map(free)
+                                      .number_of_iterations(options_.iterations));
+      piece.embedded = is_boundary_embedded(chart, uv);
+      if(piece.embedded) break;
+    }
+    const Distortion_statistics s = CGAL::compute_distortion(chart, uv, measure_, parameters::cell_distortion_map(value));
+    piece.mean = s.mean_volume, piece.max = s.max, piece.inverted = s.inverted_cells, piece.iterations = r.iterations;
+    piece.value.clear();
+    for(auto f : chart.faces()) piece.value.push_back(value[f]);
+    piece.uv.clear();
+    for(auto v : chart.vertices()) piece.uv.emplace_back(uv[v].x(), uv[v].y());
+    piece.area = piece.uv_area = 0;
+    for(auto f : chart.faces()) {
+      const auto h = chart.halfedge(f);
+      const Vertex a = chart.source(h), b = chart.target(h), c = chart.target(chart.next(h));
+      piece.area += std::sqrt(CGAL::to_double(CGAL::squared_area(chart.point(a), chart.point(b), chart.point(c))));
+      piece.uv_area += CGAL::to_double(CGAL::area(uv[a], uv[b], uv[c]));
+    }
+  }
+
+  // Every chart at one scale (the same texel density), then packed.
+  void pack()
+  {
+    double area = 0, uv_area = 0;
+    for(const Piece& piece : pieces_) area += piece.area, uv_area += piece.uv_area;
+    const double s = uv_area > 0 ? std::sqrt(area / uv_area) : 1;
+    std::vector<std::vector<Vector<2>>> charts;
+    std::vector<double> chart_area;
+    for(Piece& piece : pieces_) {
+      for(auto& p : piece.uv) p *= s;
+      charts.push_back(piece.uv);
+      chart_area.push_back(piece.uv_area * s * s);
+    }
+    efficiency_ = pack_charts(charts, chart_area, options_.gutter);
+    for(std::size_t k = 0; k < pieces_.size(); ++k) pieces_[k].uv = charts[k];
+  }
+
+  Atlas_arrays collect() const
+  {
+    Atlas_arrays a;
+    a.corner_uv.resize(faces_.size());
+    a.chart.resize(faces_.size());
+    a.face_distortion.resize(faces_.size());
+    a.charts = pieces_.size();
+    a.packing_efficiency = efficiency_;
+    double area = 0;
+    for(std::size_t k = 0; k < pieces_.size(); ++k) {
+      const Piece& piece = pieces_[k];
+      for(std::size_t f = 0; f < piece.face.size(); ++f) {
+        a.chart[piece.face[f]] = k;
+        a.face_distortion[piece.face[f]] = piece.value[f];
+        for(int i = 0; i < 3; ++i) {
+          const Vector<2>& p = piece.uv[piece.corner[f][i]];
+          a.corner_uv[piece.face[f]][i] = {p[0], p[1]};
+        }
+      }
+      for(auto e : piece.mesh.edges()) {
+        const double l = edge_length(piece.mesh, e);
+        a.edge_length += l;
+        if(piece.seam[std::size_t(e)] && !piece.mesh.is_border(e)) {
+          a.seam_length += l;
+          a.seam_edges.push_back({piece.vertex[std::size_t(piece.mesh.vertex(e, 0))], piece.vertex[std::size_t(piece.mesh.vertex(e, 1))]});
+        }
+      }
+      a.cones += piece.cones;
+      a.mean_distortion += piece.mean * piece.area;
+      area += piece.area;
+      a.max_distortion = (std::max)(a.max_distortion, piece.max);
+      a.inverted_faces += piece.inverted;
+      a.overlapping_charts += !piece.embedded;
+      a.iterations += piece.iterations;
+    }
+    a.mean_distortion /= area;
+    return a;
+  }
+
+  const std::vector<std::array<double, 3>>& points_;
+  const std::vector<std::array<std::uint32_t, 3>>& faces_;
+  const Measure& measure_;
+  Atlas_options options_;
+  std::vector<Piece> pieces_;
+  double efficiency_ = 0;
+};
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_ATLAS_BUILDER_H

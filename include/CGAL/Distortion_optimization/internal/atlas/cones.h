@@ -1,0 +1,116 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The cone vertices of a piece: where its seams must reach for the piece to flatten with little
+// distortion.
+
+#ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_CONES_H
+#define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_CONES_H
+
+#include <CGAL/license/Distortion_optimization.h>
+
+#include <CGAL/Distortion_optimization/internal/atlas/cut_graph.h>
+#include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
+
+#include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+// The cotangent Laplacian's edge weights (the negative ones raised to a small positive floor, so
+// that the system below stays positive definite) and each vertex's angle defect: 2 pi, or pi on a
+// border, less the angles about it.
+template <class Mesh>
+void cotangent_weights_and_defects(const Mesh& m, std::vector<double>& weight, std::vector<double>& defect)
+{
+  weight.assign(m.number_of_edges(), 0);
+  defect.assign(m.number_of_vertices(), 0);
+  for(auto v : m.vertices()) defect[std::size_t(v)] = m.is_border(v) ? M_PI : 2 * M_PI;
+  for(auto f : m.faces()) {
+    auto h = m.halfedge(f);
+    for(int i = 0; i < 3; ++i, h = m.next(h)) {
+      // The angle at the corner opposite h's edge, at the target of next(h).
+      const auto& a = m.point(m.source(h));
+      const auto& b = m.point(m.target(h));
+      const auto& c = m.point(m.target(m.next(h)));
+      const double ux = CGAL::to_double(a.x() - c.x()), uy = CGAL::to_double(a.y() - c.y()), uz = CGAL::to_double(a.z() - c.z());
+      const double wx = CGAL::to_double(b.x() - c.x()), wy = CGAL::to_double(b.y() - c.y()), wz = CGAL::to_double(b.z() - c.z());
+      const double dot = ux * wx + uy * wy + uz * wz;
+      const double cross = std::sqrt((uy * wz - uz * wy) * (uy * wz - uz * wy) + (uz * wx - ux * wz) * (uz * wx - ux * wz) +
+                                     (ux * wy - uy * wx) * (ux * wy - uy * wx));
+      weight[std::size_t(m.edge(h))] += cross > 0 ? 0.5 * dot / cross : 0;
+      defect[std::size_t(m.target(m.next(h)))] -= std::atan2(cross, dot);
+    }
+  }
+  for(double& w : weight) w = (std::max)(w, 1e-4);
+}
+
+// Cone vertices, chosen as in Ben-Chen, Gotsman and Bunin, "Conformal flattening by curvature
+// prescription and metric scaling" (2008): the log scale factor u of the conformal flattening
+// that keeps the lengths on the borders, the seams and the cones so far (u = 0 there; L u = -K
+// elsewhere, L the cotangent Laplacian and K the angle defects) is largest in magnitude where the
+// flattening would stretch or shrink the piece most; that vertex becomes the next cone, until
+// |u| <= `max_log_scale` everywhere or `max_cones` are placed. A closed piece without seams gets
+// two cones at least: a cut needs both ends.
+template <class Mesh>
+std::vector<typename Mesh::Vertex_index> place_cones(const Mesh& m, const std::vector<bool>& seam, double max_log_scale,
+                                                     std::size_t max_cones)
+{
+  using Vertex = typename Mesh::Vertex_index;
+  std::vector<double> weight, defect;
+  cotangent_weights_and_defects(m, weight, defect);
+  std::vector<bool> fixed = vertices_on_cuts(m, seam);
+  std::vector<Vertex> cones;
+  if(std::find(fixed.begin(), fixed.end(), true) == fixed.end()) {
+    Vertex sharpest = *m.vertices().begin();
+    for(auto v : m.vertices())
+      if(std::abs(defect[std::size_t(v)]) > std::abs(defect[std::size_t(sharpest)])) sharpest = v;
+    cones.push_back(sharpest);
+    fixed[std::size_t(sharpest)] = true;
+  }
+  const bool needs_a_cut = cones.size() == 1;
+  std::vector<int> column(m.number_of_vertices());
+  while(cones.size() < max_cones) {
+    int size = 0;
+    for(auto v : m.vertices()) column[std::size_t(v)] = fixed[std::size_t(v)] ? -1 : size++;
+    if(size == 0) break;
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd rhs(size);
+    for(auto v : m.vertices())
+      if(column[std::size_t(v)] >= 0) rhs[column[std::size_t(v)]] = -defect[std::size_t(v)];
+    for(auto e : m.edges()) {
+      const int a = column[std::size_t(m.vertex(e, 0))], b = column[std::size_t(m.vertex(e, 1))];
+      const double w = weight[std::size_t(e)];
+      if(a >= 0) entries.emplace_back(a, a, w);
+      if(b >= 0) entries.emplace_back(b, b, w);
+      if(a >= 0 && b >= 0) entries.emplace_back((std::max)(a, b), (std::min)(a, b), -w);
+    }
+    Eigen::SparseMatrix<double> L(size, size);
+    L.setFromTriplets(entries.begin(), entries.end());
+    Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from, Fill_reducing_order::MINIMUM_DEGREE);
+    if(!factorization.factorize(L)) break;
+    const Eigen::VectorXd u = factorization.solve(rhs);
+    Vertex largest = Mesh::null_vertex();
+    double magnitude = 0;
+    for(auto v : m.vertices())
+      if(column[std::size_t(v)] >= 0 && std::abs(u[column[std::size_t(v)]]) > magnitude)
+        magnitude = std::abs(u[column[std::size_t(v)]]), largest = v;
+    if(largest == Mesh::null_vertex() || !(magnitude > max_log_scale || (needs_a_cut && cones.size() < 2))) break;
+    cones.push_back(largest);
+    fixed[std::size_t(largest)] = true;
+  }
+  return cones;
+}
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
+
+#endif // CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_CONES_H

@@ -1,0 +1,100 @@
+// Copyright (c) 2026 The Distortion_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The atlas path: a source with a closed piece or a handle, without --target, is cut into charts,
+// flattened and packed by compute_atlas(), and written as an OBJ with one UV per corner.
+
+#include "tool.h"
+
+#include <CGAL/Distortion_optimization/IO/svg.h>
+#include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+#include <CGAL/Distortion_optimization/atlas.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace distortion_optimizer {
+
+int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& mesh)
+{
+  const std::string why = printable(c.source) + " has a closed piece or a handle, so its map to the plane is an atlas with seams";
+  if(extension(c.output) != "obj")
+    throw DO::Invalid_input(why + ", whose UVs are per corner: give an .obj output (--output X.obj)");
+  const auto refuse_with = [&](bool given, const std::string& option) {
+    if(given) throw DO::Invalid_input(why + ": " + option + " does not apply to it");
+  };
+  refuse_with(c.fix != "boundary" && c.fix != "none", "--fix FILE");
+  refuse_with(c.subdivide > 0, "--subdivide");
+  refuse_with(!c.vertex_weights.empty(), "--vertex-weights");
+  refuse_with(!c.flat_output.empty(), "--flat-output");
+  refuse_with(c.untangle, "--untangle (the charts' starts are never tangled)");
+  refuse_with(c.svg_both, "--svg-both (the atlas is drawn alone)");
+
+  auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:atlas_uv").first;
+  auto value = mesh.add_property_map<Mesh::Face_index, double>("f:atlas_distortion").first;
+  const DO::Any_measure measure = measure_of(c);
+  const DO::Atlas_result a = DO::compute_atlas(
+    mesh, uv, measure,
+    DO::parameters::cell_distortion_map(value, DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256))))
+      .number_of_iterations(c.iterations));
+
+  // The surface as read, with one vt per distinct UV of a vertex (a vertex on a seam has several).
+  DO::IO::Triangle_soup textured;
+  textured.points = source.points;
+  textured.cells = source.cells;
+  std::map<std::tuple<std::size_t, double, double>, std::size_t> vt;
+  for(auto f : mesh.faces()) {
+    std::array<std::size_t, 3> t{};
+    for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const std::size_t v = std::size_t(mesh.target(h));
+      const auto key = std::make_tuple(v, uv[h].x(), uv[h].y());
+      auto [at, added] = vt.emplace(key, textured.texture_coordinates.size());
+      if(added) textured.texture_coordinates.push_back({uv[h].x(), uv[h].y()});
+      for(int i = 0; i < 3; ++i)
+        if(source.cells[std::size_t(f)][i] == v) t[i] = at->second;
+    }
+    textured.cell_texture_indices.push_back(t);
+  }
+  DO::IO::write_triangle_soup(c.output, textured);
+
+  DO::Result r;
+  r.initial_energy = r.harmonic_start_energy = std::numeric_limits<double>::quiet_NaN();
+  r.final_energy = a.mean_distortion;
+  r.iterations = a.iterations;
+  r.seconds = a.seconds;
+  r.inverted_cells = a.inverted_faces;
+  // The pictures: each face's UV triangle (its corners apart, as the seams have them).
+  DO::IO::Svg_panel map;
+  if(!c.svg.empty()) {
+    std::vector<std::array<double, 3>> corners;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<double> values;
+    for(auto f : mesh.faces()) {
+      std::array<std::size_t, 3> t{};
+      int i = 0;
+      for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+        t[i++] = corners.size();
+        corners.push_back({uv[h].x(), uv[h].y(), 0.});
+      }
+      triangles.push_back(t);
+      values.push_back(value[f]);
+    }
+    map = DO::IO::triangle_panel("atlas", corners, triangles, values);
+  }
+  write_pictures(c, {}, std::move(map), measure.name(), measure.name(), r);
+  report(c, mesh.number_of_faces(), mesh.number_of_vertices(), measure.name(), r,
+         {{"charts", std::to_string(a.charts)},
+          {"cones", std::to_string(a.cones)},
+          {"seam_length_fraction", json_number(a.seam_length_fraction)},
+          {"packing_efficiency", json_number(a.packing_efficiency)},
+          {"overlapping_charts", std::to_string(a.overlapping_charts)},
+          {"max_cell_distortion", json_number(a.max_distortion)}});
+  return 0;
+}
+
+} // namespace distortion_optimizer
