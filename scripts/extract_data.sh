@@ -59,6 +59,7 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/dino.off \
   data/meshes/pig.stl \
   data/meshes/eight.off \
+  data/meshes/elephant.off \
   data/meshes/knot1.off \
   data/meshes/sphere.off \
   data/meshes/sphere.ply \

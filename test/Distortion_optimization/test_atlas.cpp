@@ -136,6 +136,18 @@ TEST(Atlas, AClosedSurfaceOfGenusZeroIsCutToItsCones)
   EXPECT_GT(c.result.seam_length_fraction, 0);
 }
 
+// CGAL's elephant (closed, genus 0): cut to its cones, its chart's border would cross itself
+// at the optimum of the measure alone (measured: the unguarded run overlaps); the scaffold keeps
+// it one-to-one at little cost (mean 1.032 measured).
+TEST(Atlas, TheScaffoldKeepsAChartFromOverlappingItself)
+{
+  Mesh3 mesh = read("elephant.off");
+  const Checked_atlas c = check_atlas(mesh);
+  EXPECT_GE(c.result.cones, 2u);
+  EXPECT_EQ(c.pieces_of_genus_zero, 1u);
+  EXPECT_LT(c.result.mean_distortion, 1.1);
+}
+
 TEST(Atlas, SeveralPiecesArePackedApartAtOneScale)
 {
   Mesh3 mesh = read("eight.off");

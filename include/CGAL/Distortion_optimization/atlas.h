@@ -65,8 +65,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(atlas_gutter_t, atlas_gutter)
 /// Cones are placed until the conformal flattening's log scale factor is at most this everywhere
 /// (`compute_atlas()`); default 1: smaller values give more cones and longer seams.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cone_log_scale_t, cone_log_scale)
-/// A bound on each chart's mean distortion (`compute_atlas()`): a chart above it is cut further,
-/// with cones at half the log scale, up to four times; default none.
+/// A bound on each chart's mean distortion (`compute_atlas()`): a chart above it gets a seam from its
+/// most distorted vertex and is flattened again, up to eight times; default none.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(max_distortion_t, max_distortion)
 } // namespace parameters
 
@@ -97,8 +97,8 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{edge_is_seam_map} \cgalParamDescription{receives whether each edge is a seam (not a border)} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{atlas_gutter} \cgalParamDescription{space between charts and about them, a fraction of the square's side, in [0, 0.25)} \cgalParamDefault{0.01} \cgalParamNEnd
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
-  \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more cones} \cgalParamDefault{none} \cgalParamNEnd
-  \cgalParamNBegin{number_of_iterations} \cgalParamDescription{of each chart's `CGAL::minimize_distortion()`} \cgalParamDefault{100} \cgalParamNEnd
+  \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more seams} \cgalParamDefault{none} \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the most iterations of each chart's optimization} \cgalParamDefault{100} \cgalParamNEnd
   \cgalParamNBegin{number_of_threads} \cgalParamDescription{as for `CGAL::minimize_distortion()`} \cgalParamDefault{1} \cgalParamNEnd
 \cgalNamedParamsEnd
 

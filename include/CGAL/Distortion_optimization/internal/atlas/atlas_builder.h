@@ -18,6 +18,7 @@
 #include <CGAL/Distortion_optimization/internal/atlas/cut_graph.h>
 #include <CGAL/Distortion_optimization/internal/atlas/cut_mesh.h>
 #include <CGAL/Distortion_optimization/internal/atlas/pack_charts.h>
+#include <CGAL/Distortion_optimization/internal/atlas/scaffold.h>
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
@@ -77,11 +78,13 @@ public:
     for(std::size_t k = 0; k < pieces_.size(); ++k) {
       Piece& piece = pieces_[k];
       piece.seam = handle_seams(piece.mesh);
-      for(double bound = options_.max_log_scale;; bound *= 0.5) {
-        add_cone_seams(piece, bound);
+      add_cone_seams(piece, options_.max_log_scale);
+      cut_open(piece);
+      flatten(piece);
+      for(int more = 0; more < 8 && options_.max_distortion > 0 && piece.mean > options_.max_distortion; ++more) {
+        add_seam_to_most_distorted(piece);
         cut_open(piece);
         flatten(piece);
-        if(!(options_.max_distortion > 0) || piece.mean <= options_.max_distortion || bound < 0.05) break;
       }
     }
     pack();
@@ -145,28 +148,44 @@ private:
     piece.cones += cones.size();
   }
 
+  // A seam from the vertex whose faces the flattening distorts most (their mean, by area) to the
+  // seams there are: where a chart stays above the distortion bound, it opens further there.
+  void add_seam_to_most_distorted(Piece& piece)
+  {
+    std::vector<double> sum(piece.mesh.number_of_vertices(), 0), area(piece.mesh.number_of_vertices(), 0);
+    for(auto f : piece.mesh.faces()) {
+      const auto h = piece.mesh.halfedge(f);
+      const double a = std::sqrt(CGAL::to_double(CGAL::squared_area(piece.mesh.point(piece.mesh.source(h)),
+                                                                     piece.mesh.point(piece.mesh.target(h)),
+                                                                     piece.mesh.point(piece.mesh.target(piece.mesh.next(h))))));
+      for(auto v : CGAL::vertices_around_face(h, piece.mesh)) {
+        sum[std::size_t(v)] += a * piece.value[std::size_t(f)];
+        area[std::size_t(v)] += a;
+      }
+    }
+    const std::vector<bool> on = vertices_on_cuts(piece.mesh, piece.seam);
+    Vertex worst = Mesh::null_vertex();
+    double largest = 0;
+    for(auto v : piece.mesh.vertices())
+      if(!on[std::size_t(v)] && area[std::size_t(v)] > 0 && sum[std::size_t(v)] / area[std::size_t(v)] > largest)
+        largest = sum[std::size_t(v)] / area[std::size_t(v)], worst = v;
+    if(worst != Mesh::null_vertex()) add_seam_to(piece.mesh, worst, worst, piece.seam);
+  }
+
   void cut_open(Piece& piece) { piece.chart = cut_along(piece.mesh, piece.seam, piece.corner); }
 
   // The chart's Tutte start (its longest border on a circle, its holes filled for the solve), then
-  // the measure minimized with every vertex free. The border is kept from crossing itself: a run
-  // without the guard is kept where it does not cross (its Newton steps are not shortened), and
-  // the guarded run is made where it does.
+  // the measure minimized with every vertex free, the border kept from crossing itself by a
+  // scaffold (scaffold.h; the boundary guard of minimize_distortion() holds the border's vertices
+  // where they would cross, and the border then opens by short steps).
   void flatten(Piece& piece)
   {
     Mesh& chart = piece.chart;
     auto uv = chart.add_property_map<Vertex, K::Point_2>("v:uv").first;
-    auto free = chart.add_property_map<Vertex, bool>("v:constrained", false).first;
     auto value = chart.add_property_map<Mesh::Face_index, double>("f:distortion").first;
-    Result r;
-    for(bool guard : {false, true}) {
-      initial_parameterization(chart, uv);
-      r = CGAL::minimize_distortion(chart, uv, measure_,
-                                    parameters::number_of_threads(options_.threads, parameters::preserve_global_injectivity(guard))
-                                      .vertex_is_constrained_map(free)
-                                      .number_of_iterations(options_.iterations));
-      piece.embedded = is_boundary_embedded(chart, uv);
-      if(piece.embedded) break;
-    }
+    initial_parameterization(chart, uv);
+    const Result r = flatten_with_scaffold(chart, uv, measure_, options_.iterations, options_.threads);
+    piece.embedded = is_boundary_embedded(chart, uv);
     const Distortion_statistics s = CGAL::compute_distortion(chart, uv, measure_, parameters::cell_distortion_map(value));
     piece.mean = s.mean_volume, piece.max = s.max, piece.inverted = s.inverted_cells, piece.iterations = r.iterations;
     piece.value.clear();
