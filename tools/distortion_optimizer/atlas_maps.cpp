@@ -40,7 +40,8 @@ int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& 
   const DO::Any_measure measure = measure_of(c);
   const DO::Atlas_result a = DO::compute_atlas(
     mesh, uv, measure,
-    DO::parameters::cell_distortion_map(value, DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256))))
+    DO::parameters::cell_distortion_map(value, DO::parameters::max_distortion(c.max_distortion,
+      DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)))))
       .number_of_iterations(c.iterations));
 
   // The surface as read, with one vt per distinct UV of a vertex (a vertex on a seam has several).

@@ -77,6 +77,8 @@ std::string usage()
   "         [--carry INNER --carry-output C [--snap]] [options above]\n"
   "       distortion_optimizer --source S --reference ideal --output O [--boundary fixed|slide]\n"
   "         [options above]\n"
+  "       distortion_optimizer --source CLOSED_OR_HANDLED --output O.obj [--max-distortion D]\n"
+  "         [options above]\n"
   "       distortion_optimizer --source S [--target T] --output O --subdivide N\n"
   "         --subdivided-source S2 [--scheme linear|loop] [options above]\n"
   "  S, T, O      triangle meshes (OFF, OBJ; S and T also PLY, STL or GOCAD .ts, read by CGAL)\n"
@@ -160,6 +162,8 @@ std::string usage()
   "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
   "               seconds; with --untangle the untangling's rounds first, their energy the\n"
   "               barrier's); the default when stderr is a terminal; --quiet: none\n"
+  "  --max-distortion  an atlas's bound on each chart's mean distortion: a chart above it gets a\n"
+  "               seam from its most distorted vertex and is flattened again, up to 8 times\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
   "               started, and write that map (the report says stopped_by_time_limit); a limit\n"
   "               reached while untangling, cells still inverted, fails (status 1); in the volume\n"
@@ -309,6 +313,10 @@ bool set_option(Command_line& c, const std::string& option, const std::string& v
   else if(option == "--iterations") c.iterations = parse_number<std::size_t>(option, value);
   else if(option == "--threads") c.threads = parse_number<std::size_t>(option, value);
   else if(option == "--threshold") c.threshold = parse_number<double>(option, value);
+  else if(option == "--max-distortion") {
+    c.max_distortion = parse_number<double>(option, value);
+    if(!(c.max_distortion >= 1) || !std::isfinite(c.max_distortion)) throw Usage_error("--max-distortion must be a number >= 1");
+  }
   else if(option == "--time-limit") {
     c.time_limit = parse_number<double>(option, value);
     if(!(c.time_limit > 0) || !std::isfinite(c.time_limit)) throw Usage_error("--time-limit must be a positive number of seconds");
@@ -388,6 +396,8 @@ Command_line parse(int argc, char** argv)
     throw Usage_error("--start is ball or radial, not '" + c.start + "'");
   if(c.volume_mode() && !c.target.empty()) throw Usage_error("--start and --target both give the start map: give one");
   if(!c.reference.empty() && !c.ideal()) throw Usage_error("--reference is ideal, not '" + c.reference + "'");
+  if(c.max_distortion > 0 && (!c.target.empty() || c.volume_mode() || c.ideal() || tetrahedral_file(c.source)))
+    throw Usage_error("--max-distortion bounds an atlas's charts: it takes a triangle surface source without --target");
   if(c.ideal() && (!c.target.empty() || c.volume_mode()))
     throw Usage_error("--reference ideal improves the source itself: no --target or --start");
   if(tetrahedral_file(c.source) && c.target.empty() && !c.volume_mode() && !c.ideal())

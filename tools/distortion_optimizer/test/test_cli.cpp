@@ -369,6 +369,18 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
   EXPECT_GT(json_value(report, "seam_length_fraction"), 0);
   EXPECT_LT(json_value(report, "final_energy"), 1.1);
   EXPECT_TRUE(test_files::exists(temp("eight_atlas.svg")));
+  // A bound below what the first cut reaches: more seams, the charts still valid.
+  const std::string bounded = temp("eight_bounded.json");
+  ASSERT_EQ(run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --max-distortion 1.01 --report " +
+                bounded).status, 0);
+  EXPECT_GT(json_value(slurp(bounded), "seam_length_fraction"), json_value(report, "seam_length_fraction"));
+  EXPECT_EQ(json_value(slurp(bounded), "inverted_cells"), 0);
+  EXPECT_EQ(json_value(slurp(bounded), "overlapping_charts"), 0);
+  const std::string none = temp("not_written.obj");
+  expect_failed_cleanly(run("--source " + data("nefertiti.off") + " --output " + none + " --max-distortion 1.1"), "needs none", none);
+  const Tool_run usage = run("--source " + data("eight.off") + " --output " + none + " --max-distortion 0.5");
+  EXPECT_EQ(usage.status, 2);
+  EXPECT_NE(usage.output.find("--max-distortion must be a number >= 1"), std::string::npos) << usage.output;
 }
 
 // The triangles of a planar soup that are not counterclockwise (exact predicate).
