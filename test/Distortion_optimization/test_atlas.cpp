@@ -29,17 +29,18 @@ std::string data(const std::string& name) { return std::string(DISTORTION_OPTIMI
 struct Checked_atlas
 {
   DO::Atlas_result result;
-  std::size_t pieces_of_genus_zero = 0, pieces = 0;
+  std::size_t pieces_of_genus_zero = 0, pieces = 0, borders = 0;
 };
 
 // Runs compute_atlas() on `mesh` and checks what holds for any atlas; returns the result and the
 // genus count of the mesh the UV corners make (one vertex per distinct UV of a vertex).
-Checked_atlas check_atlas(Mesh3& mesh)
+Checked_atlas check_atlas(Mesh3& mesh, const std::vector<Mesh3::Edge_index>& user_seams = {})
 {
   const std::vector<Point_3> before(mesh.points().begin(), mesh.points().end());
   auto uv = mesh.add_property_map<Mesh3::Halfedge_index, Point_2>("h:uv").first;
   auto chart = mesh.add_property_map<Mesh3::Face_index, std::size_t>("f:chart").first;
-  auto seam = mesh.add_property_map<Mesh3::Edge_index, bool>("e:seam").first;
+  auto seam = mesh.add_property_map<Mesh3::Edge_index, bool>("e:seam", false).first;
+  for(auto e : user_seams) seam[e] = true;
   Checked_atlas c;
   c.result = DO::compute_atlas(mesh, uv, DO::Symmetric_dirichlet(),
                                DO::parameters::face_chart_map(chart, DO::parameters::edge_is_seam_map(seam)));
@@ -59,6 +60,7 @@ Checked_atlas check_atlas(Mesh3& mesh)
     seams += seam[e];
   }
   EXPECT_EQ(seams > 0, c.result.seam_length_fraction > 0);
+  for(auto e : user_seams) EXPECT_TRUE(seam[e]);
 
   // The cut mesh: every UV triangle positive (exact), inside the unit square, each piece of genus
   // 0, and no border crossing another.
@@ -97,6 +99,7 @@ Checked_atlas check_atlas(Mesh3& mesh)
   for(auto h : cycles) ++borders[piece[cut.face(cut.opposite(h))]];
   for(std::size_t k = 0; k < c.pieces; ++k) {
     EXPECT_GT(borders[k], 0);
+    c.borders += std::size_t(borders[k]);
     c.pieces_of_genus_zero += euler[k] == 2 - borders[k];
   }
   return c;
@@ -146,6 +149,45 @@ TEST(Atlas, TheScaffoldKeepsAChartFromOverlappingItself)
   EXPECT_GE(c.result.cones, 2u);
   EXPECT_EQ(c.pieces_of_genus_zero, 1u);
   EXPECT_LT(c.result.mean_distortion, 1.1);
+}
+
+// An open cylinder of 24 x 8 unit squares, each split in two: developable, with two borders.
+Mesh3 cylinder(std::vector<Mesh3::Edge_index>& rim_to_rim)
+{
+  const int n = 24, m = 8;
+  const double radius = 0.5 / std::sin(M_PI / n);   // unit edges around
+  Mesh3 mesh;
+  for(int k = 0; k <= m; ++k)
+    for(int i = 0; i < n; ++i)
+      mesh.add_vertex(Point_3(radius * std::cos(2 * M_PI * i / n), radius * std::sin(2 * M_PI * i / n), k));
+  const auto v = [&](int i, int k) { return Mesh3::Vertex_index(std::uint32_t(k * n + (i % n))); };
+  for(int k = 0; k < m; ++k)
+    for(int i = 0; i < n; ++i) {
+      mesh.add_face(v(i, k), v(i + 1, k), v(i + 1, k + 1));
+      mesh.add_face(v(i, k), v(i + 1, k + 1), v(i, k + 1));
+    }
+  rim_to_rim.clear();
+  for(int k = 0; k < m; ++k) rim_to_rim.push_back(mesh.edge(mesh.halfedge(v(0, k), v(0, k + 1))));
+  return mesh;
+}
+
+// A case with a known answer: the open cylinder needs no seam (a planar annulus, distorted), and
+// the user's seam from rim to rim makes it a disk that unrolls without distortion.
+TEST(Atlas, AnOpenCylinderNeedsNoSeamAndUnrollsAlongTheUsersSeam)
+{
+  std::vector<Mesh3::Edge_index> seam;
+  Mesh3 annulus = cylinder(seam);
+  const Checked_atlas free = check_atlas(annulus);
+  EXPECT_EQ(free.result.cones, 0u);
+  EXPECT_EQ(free.result.seam_length_fraction, 0);
+  EXPECT_EQ(free.borders, 2u);
+  EXPECT_GT(free.result.mean_distortion, 1.01);
+  Mesh3 strip = cylinder(seam);
+  const Checked_atlas cut = check_atlas(strip, seam);
+  EXPECT_EQ(cut.borders, 1u);
+  EXPECT_EQ(cut.pieces_of_genus_zero, 1u);
+  EXPECT_GT(cut.result.seam_length_fraction, 0);
+  EXPECT_LT(cut.result.mean_distortion, 1.001);
 }
 
 TEST(Atlas, SeveralPiecesArePackedApartAtOneScale)

@@ -8,10 +8,12 @@
 
 #include <CGAL/Distortion_optimization/IO/svg.h>
 #include <CGAL/Distortion_optimization/IO/triangle_soup.h>
+#include <CGAL/Distortion_optimization/IO/vertex_list.h>
 #include <CGAL/Distortion_optimization/atlas.h>
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <string>
@@ -22,7 +24,8 @@ namespace distortion_optimizer {
 
 int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& mesh)
 {
-  const std::string why = printable(c.source) + " has a closed piece or a handle, so its map to the plane is an atlas with seams";
+  const std::string why = c.seams.empty() ? printable(c.source) + " has a closed piece or a handle, so its map to the plane is an atlas with seams"
+                                          : "with --seams the map is an atlas";
   if(extension(c.output) != "obj")
     throw DO::Invalid_input(why + ", whose UVs are per corner: give an .obj output (--output X.obj)");
   const auto refuse_with = [&](bool given, const std::string& option) {
@@ -35,13 +38,21 @@ int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& 
   refuse_with(c.untangle, "--untangle (the charts' starts are never tangled)");
   refuse_with(c.svg_both, "--svg-both (the atlas is drawn alone)");
 
+  auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:atlas_seam", false).first;
+  if(!c.seams.empty()) {
+    std::ifstream in(c.seams, std::ios::binary);
+    if(!in) throw DO::Invalid_input(printable(c.seams) + ": cannot open the file of seams");
+    const auto is_edge = [&](std::size_t u, std::size_t w) { return mesh.halfedge(Vertex(u), Vertex(w)) != Mesh::null_halfedge(); };
+    for(const auto& [u, w] : DO::IO::read_vertex_pairs(in, mesh.number_of_vertices(), is_edge, c.seams))
+      seam[mesh.edge(mesh.halfedge(Vertex(u), Vertex(w)))] = true;
+  }
   auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:atlas_uv").first;
   auto value = mesh.add_property_map<Mesh::Face_index, double>("f:atlas_distortion").first;
   const DO::Any_measure measure = measure_of(c);
   const DO::Atlas_result a = DO::compute_atlas(
     mesh, uv, measure,
-    DO::parameters::cell_distortion_map(value, DO::parameters::max_distortion(c.max_distortion,
-      DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256)))))
+    DO::parameters::cell_distortion_map(value, DO::parameters::edge_is_seam_map(seam, DO::parameters::max_distortion(c.max_distortion,
+      DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256))))))
       .number_of_iterations(c.iterations));
 
   // The surface as read, with one vt per distinct UV of a vertex (a vertex on a seam has several).

@@ -78,7 +78,7 @@ std::string usage()
   "       distortion_optimizer --source S --reference ideal --output O [--boundary fixed|slide]\n"
   "         [options above]\n"
   "       distortion_optimizer --source CLOSED_OR_HANDLED --output O.obj [--max-distortion D]\n"
-  "         [options above]\n"
+  "         [--seams FILE] [options above]\n"
   "       distortion_optimizer --source S [--target T] --output O --subdivide N\n"
   "         --subdivided-source S2 [--scheme linear|loop] [options above]\n"
   "  S, T, O      triangle meshes (OFF, OBJ; S and T also PLY, STL or GOCAD .ts, read by CGAL)\n"
@@ -162,6 +162,8 @@ std::string usage()
   "  --verbose    a progress line per iteration on stderr (iteration, energy, relative decrease,\n"
   "               seconds; with --untangle the untangling's rounds first, their energy the\n"
   "               barrier's); the default when stderr is a terminal; --quiet: none\n"
+  "  --seams      a file of edges to cut an atlas along, one per line as two 0-based vertex\n"
+  "               indices: any source then gets an atlas; more seams are added where needed\n"
   "  --max-distortion  an atlas's bound on each chart's mean distortion: a chart above it gets a\n"
   "               seam from its most distorted vertex and is flattened again, up to 8 times\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
@@ -249,6 +251,7 @@ void check_files(const Command_line& c)
   if(!c.target.empty()) inputs.emplace_back("--target", c.target);
   if(c.fix != "boundary" && c.fix != "none") inputs.emplace_back("--fix", c.fix);
   if(!c.vertex_weights.empty()) inputs.emplace_back("--vertex-weights", c.vertex_weights);
+  if(!c.seams.empty()) inputs.emplace_back("--seams", c.seams);
   if(!c.carry.empty()) inputs.emplace_back("--carry", c.carry);
   if(!c.report.empty()) outputs.emplace_back("--report", c.report);
   if(!c.mesh_output.empty()) outputs.emplace_back("--mesh-output", c.mesh_output);
@@ -298,7 +301,7 @@ bool set_option(Command_line& c, const std::string& option, const std::string& v
     {"--parallel-sweep", &Command_line::parallel_sweep}, {"--global-step", &Command_line::global_step},
     {"--harmonic-start", &Command_line::harmonic_start}, {"--energy-plot", &Command_line::energy_plot},
     {"--carry", &Command_line::carry}, {"--carry-output", &Command_line::carry_output},
-    {"--solver", &Command_line::solver}, {"--report", &Command_line::report}, {"--schedule", &Command_line::schedule}};
+    {"--solver", &Command_line::solver}, {"--report", &Command_line::report}, {"--seams", &Command_line::seams}, {"--schedule", &Command_line::schedule}};
   if(const auto member = text.find(option); member != text.end()) c.*(member->second) = value;
   else if(option == "--fix") { c.fix = value; c.fix_given = true; }
   else if(option == "--subdivide") {
@@ -398,6 +401,8 @@ Command_line parse(int argc, char** argv)
   if(!c.reference.empty() && !c.ideal()) throw Usage_error("--reference is ideal, not '" + c.reference + "'");
   if(c.max_distortion > 0 && (!c.target.empty() || c.volume_mode() || c.ideal() || tetrahedral_file(c.source)))
     throw Usage_error("--max-distortion bounds an atlas's charts: it takes a triangle surface source without --target");
+  if(!c.seams.empty() && (!c.target.empty() || c.volume_mode() || c.ideal() || tetrahedral_file(c.source)))
+    throw Usage_error("--seams cuts an atlas: it takes a triangle surface source without --target");
   if(c.ideal() && (!c.target.empty() || c.volume_mode()))
     throw Usage_error("--reference ideal improves the source itself: no --target or --start");
   if(tetrahedral_file(c.source) && c.target.empty() && !c.volume_mode() && !c.ideal())

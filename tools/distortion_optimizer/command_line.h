@@ -35,6 +35,7 @@ struct Command_line
   bool quiet = false, verbose = false;       // progress lines: neither given = when stderr is a terminal
   double time_limit = 0;                     // 0: none
   double max_distortion = 0;                 // an atlas's bound (0: none)
+  std::string seams;                         // an atlas's seams (vertex pairs), if given
   // Volume mode (--start): the start map, where the meshed source and the carried surface go.
   std::string start, mesh_output, boundary, carry, carry_output;
   double cell_size = 0;                      // 0: mesh_interior's default

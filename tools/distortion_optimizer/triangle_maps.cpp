@@ -166,8 +166,9 @@ int run_triangles(const Command_line& c)
     }
   } else {
     borders = borders_of_planar_domain(mesh, outer);
-    // A closed piece or a handle: no one map to the plane, but an atlas (cut, flattened, packed).
-    if(borders == 0) return run_atlas(c, source, mesh);
+    // A closed piece or a handle, or seams given: no one map to the plane, but an atlas (cut,
+    // flattened, packed).
+    if(borders == 0 || !c.seams.empty()) return run_atlas(c, source, mesh);
     if(c.max_distortion > 0)
       throw DO::Invalid_input(c.source + ": --max-distortion bounds the charts of an atlas, and this source needs none (every "
                               "piece a disk or a disk with holes)");

@@ -58,7 +58,8 @@ enum max_distortion_t { max_distortion };
 namespace parameters {
 /// A writable face property map to `std::size_t` that receives each face's chart (`compute_atlas()`).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(face_chart_map_t, face_chart_map)
-/// A writable edge property map to `bool` that receives whether each edge is a seam (`compute_atlas()`).
+/// A read-write edge property map to `bool` (`compute_atlas()`): the edges it flags are seams (the
+/// user's, as CGAL's `Seam_mesh` takes them), and on return it flags every seam.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(edge_is_seam_map_t, edge_is_seam_map)
 /// The space between charts and about them, a fraction of the unit square's side (`compute_atlas()`); default 0.01.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(atlas_gutter_t, atlas_gutter)
@@ -94,7 +95,7 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{vertex_point_map} \cgalParamDescription{the surface's points} \cgalParamDefault{`get(CGAL::vertex_point, tm)`} \cgalParamNEnd
   \cgalParamNBegin{face_chart_map} \cgalParamDescription{receives each face's chart number, from 0} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{cell_distortion_map} \cgalParamDescription{receives the measure's value on each face} \cgalParamDefault{unused} \cgalParamNEnd
-  \cgalParamNBegin{edge_is_seam_map} \cgalParamDescription{receives whether each edge is a seam (not a border)} \cgalParamDefault{unused} \cgalParamNEnd
+  \cgalParamNBegin{edge_is_seam_map} \cgalParamDescription{the user's seams (edges flagged true; a border edge is no seam), then on return every seam} \cgalParamDefault{no seam given, none returned} \cgalParamNEnd
   \cgalParamNBegin{atlas_gutter} \cgalParamDescription{space between charts and about them, a fraction of the square's side, in [0, 0.25)} \cgalParamDefault{0.01} \cgalParamNEnd
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
   \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more seams} \cgalParamDefault{none} \cgalParamNEnd
@@ -149,14 +150,19 @@ Atlas_result compute_atlas(const TriangleMesh& tm, HalfedgeUVMap uv, const Measu
     corners.push_back(c);
   }
 
+  const auto seam_map = get_parameter(np, internal_np::edge_is_seam_map);
+  constexpr bool wants_seams = !std::is_same<std::decay_t<decltype(seam_map)>, CGAL::internal_np::Param_not_found>::value;
+  if constexpr(wants_seams)
+    for(auto e : edges(tm))
+      if(get(seam_map, e) && !is_border(e, tm))
+        options.seams.push_back({static_cast<std::uint32_t>(get(index, source(e, tm))), static_cast<std::uint32_t>(get(index, target(e, tm)))});
+
   const internal::Atlas_arrays a = internal::Atlas_builder<Measure>(points, triangles, measure, options).run();
 
   const auto chart_map = get_parameter(np, internal_np::face_chart_map);
-  const auto seam_map = get_parameter(np, internal_np::edge_is_seam_map);
   const auto value_map = get_parameter(np, internal_np::cell_distortion_map);
   constexpr bool wants_values = !std::is_same<std::decay_t<decltype(value_map)>, CGAL::internal_np::Param_not_found>::value;
   constexpr bool wants_charts = !std::is_same<std::decay_t<decltype(chart_map)>, CGAL::internal_np::Param_not_found>::value;
-  constexpr bool wants_seams = !std::is_same<std::decay_t<decltype(seam_map)>, CGAL::internal_np::Param_not_found>::value;
   std::set<std::pair<std::uint32_t, std::uint32_t>> seam;   // by its ends' indices, the smaller first
   for(const auto& [u, w] : a.seam_edges) seam.emplace((std::min)(u, w), (std::max)(u, w));
   if constexpr(wants_seams)

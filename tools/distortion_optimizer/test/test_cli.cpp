@@ -383,6 +383,39 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
   EXPECT_NE(usage.output.find("--max-distortion must be a number >= 1"), std::string::npos) << usage.output;
 }
 
+// --seams: a strip of squares bent into an open cylinder (it needs no seam) cut along the user's
+// seam unrolls without distortion; a seam that is not an edge is refused, nothing written.
+TEST(CommandLine, SeamsFromAFile)
+{
+  IO::Triangle_soup tube;
+  const int n = 24, m = 6;
+  const double radius = 0.5 / std::sin(M_PI / n);
+  for(int k = 0; k <= m; ++k)
+    for(int i = 0; i < n; ++i) tube.points.push_back({radius * std::cos(2 * M_PI * i / n), radius * std::sin(2 * M_PI * i / n), double(k)});
+  const auto v = [&](int i, int k) { return std::size_t(k * n + (i % n)); };
+  for(int k = 0; k < m; ++k)
+    for(int i = 0; i < n; ++i) {
+      tube.cells.push_back({v(i, k), v(i + 1, k), v(i + 1, k + 1)});
+      tube.cells.push_back({v(i, k), v(i + 1, k + 1), v(i, k + 1)});
+    }
+  const std::string s = temp("tube.off"), seams = temp("tube_seams.txt"), o = temp("tube_atlas.obj"), r = temp("tube.json");
+  IO::write_triangle_soup(s, tube);
+  {
+    std::ofstream out(seams);
+    out << "# rim to rim\n";
+    for(int k = 0; k < m; ++k) out << v(0, k) << " " << v(0, k + 1) << "\n";
+  }
+  const Tool_run result = run("--source " + s + " --seams " + seams + " --output " + o + " --measure symmetric_dirichlet --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_GT(json_value(slurp(r), "seam_length_fraction"), 0);
+  EXPECT_LT(json_value(slurp(r), "final_energy"), 1.001);
+  EXPECT_EQ(json_value(slurp(r), "overlapping_charts"), 0);
+  EXPECT_EQ(IO::read_triangle_soup(o).texture_coordinates.size(), tube.points.size() + m + 1);   // the seam's vertices twice
+  std::ofstream(temp("bad_seams.txt")) << "0 1\n0 30\n";
+  const std::string none = temp("tube_not_written.obj");
+  expect_failed_cleanly(run("--source " + s + " --seams " + temp("bad_seams.txt") + " --output " + none), "bad_seams.txt:2: vertices 0 and 30 are not joined by an edge", none);
+}
+
 // The triangles of a planar soup that are not counterclockwise (exact predicate).
 static std::size_t inverted(const IO::Triangle_soup& soup)
 {

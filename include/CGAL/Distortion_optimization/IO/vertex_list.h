@@ -12,6 +12,8 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/IO/internal/line_reader.h>
 
+#include <array>
+#include <cstddef>
 #include <fstream>
 #include <istream>
 #include <limits>
@@ -52,6 +54,37 @@ inline std::vector<unsigned char> read_vertex_list(const std::string& path, std:
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Invalid_input(internal::printable(path) + ": cannot open the file of vertex indices");
   return read_vertex_list(in, count, path);
+}
+
+/// \ingroup PkgDistortionOptimizationIO
+/// Reads a list of edges of a mesh with `count` vertices, each as the 0-based indices of its two
+/// vertices on one line (the seams of an atlas, `compute_atlas()`), `#` starting a comment, blank
+/// lines skipped. `is_edge(i, j)` tells whether vertices i and j are joined by an edge. `name` is
+/// used in error messages.
+/// \throws Invalid_input naming the line for a token that is not an integer, a line without two
+/// indices, an index out of range, or two vertices that no edge joins.
+template <class IsEdge>
+std::vector<std::array<std::size_t, 2>> read_vertex_pairs(std::istream& in, std::size_t count, const IsEdge& is_edge,
+                                                          const std::string& name = "vertex pairs")
+{
+  internal::Line_reader reader(in, name);
+  std::vector<std::array<std::size_t, 2>> pairs;
+  std::vector<std::string> t;
+  while(reader.next(t)) {
+    if(t.size() != 2) reader.fail("two vertex indices per line (an edge)");
+    std::array<std::size_t, 2> pair{};
+    for(int k = 0; k < 2; ++k) {
+      const long long index = reader.integer(t[k]);
+      if(index < 0 || static_cast<unsigned long long>(index) >= count)
+        reader.fail("vertex index " + std::to_string(index) + " out of range (the mesh has " + std::to_string(count) +
+                    " vertices)");
+      pair[k] = static_cast<std::size_t>(index);
+    }
+    if(!is_edge(pair[0], pair[1]))
+      reader.fail("vertices " + std::to_string(pair[0]) + " and " + std::to_string(pair[1]) + " are not joined by an edge");
+    pairs.push_back(pair);
+  }
+  return pairs;
 }
 
 /// \ingroup PkgDistortionOptimizationIO

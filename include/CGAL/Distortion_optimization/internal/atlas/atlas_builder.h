@@ -44,6 +44,7 @@ struct Atlas_options
   double gutter = 0.01;               // between charts, a fraction of the square's side
   std::size_t iterations = 100;       // of each chart's minimize_distortion()
   int threads = 1;
+  std::vector<std::array<std::uint32_t, 2>> seams;   // the user's, as vertex pairs of edges
 };
 
 // What the atlas has: each face's chart and its corners' UVs, the seams, and the figures.
@@ -78,6 +79,7 @@ public:
     for(std::size_t k = 0; k < pieces_.size(); ++k) {
       Piece& piece = pieces_[k];
       piece.seam = handle_seams(piece.mesh);
+      add_user_seams(piece);
       add_cone_seams(piece, options_.max_log_scale);
       cut_open(piece);
       flatten(piece);
@@ -136,6 +138,20 @@ private:
       }
       piece.mesh.add_face(t[0], t[1], t[2]);
       piece.face.push_back(f);
+    }
+  }
+
+  // The user's seams on this piece: its edges whose ends the options pair.
+  void add_user_seams(Piece& piece)
+  {
+    if(options_.seams.empty()) return;
+    std::vector<std::uint32_t> local(points_.size(), std::uint32_t(-1));
+    for(std::size_t i = 0; i < piece.vertex.size(); ++i) local[piece.vertex[i]] = std::uint32_t(i);
+    for(const auto& [u, w] : options_.seams) {
+      if(local[u] == std::uint32_t(-1) || local[w] == std::uint32_t(-1)) continue;
+      const auto h = piece.mesh.halfedge(Vertex(local[u]), Vertex(local[w]));
+      if(h == Mesh::null_halfedge()) throw Invalid_input("seam " + std::to_string(u) + " " + std::to_string(w) + " is not an edge");
+      piece.seam[std::size_t(piece.mesh.edge(h))] = true;
     }
   }
 
