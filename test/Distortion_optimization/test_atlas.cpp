@@ -209,6 +209,18 @@ TEST(Atlas, BadParametersAreRefused)
   auto uv = mesh.add_property_map<Mesh3::Halfedge_index, Point_2>("h:uv").first;
   EXPECT_THROW(DO::compute_atlas(mesh, uv, DO::Symmetric_dirichlet(), DO::parameters::atlas_gutter(0.3)), DO::Invalid_input);
   EXPECT_THROW(DO::compute_atlas(mesh, uv, DO::Symmetric_dirichlet(), DO::parameters::cone_log_scale(0.)), DO::Invalid_input);
+  // A closed surface with a face of zero area, named by its index.
+  Mesh3 flat;
+  const auto p0 = flat.add_vertex(Point_3(0, 0, 0)), p1 = flat.add_vertex(Point_3(1, 0, 0)), p2 = flat.add_vertex(Point_3(2, 0, 0)),
+             p3 = flat.add_vertex(Point_3(0, 0, 1));
+  flat.add_face(p0, p2, p1), flat.add_face(p0, p1, p3), flat.add_face(p1, p2, p3), flat.add_face(p0, p3, p2);
+  auto flat_uv = flat.add_property_map<Mesh3::Halfedge_index, Point_2>("h:uv").first;
+  try {
+    DO::compute_atlas(flat, flat_uv, DO::Symmetric_dirichlet());
+    ADD_FAILURE() << "a degenerate face was accepted";
+  } catch(const DO::Invalid_input& e) {
+    EXPECT_EQ(std::string(e.what()), "face 0 is degenerate (its corners are collinear)");
+  }
   Mesh3 empty;
   auto none = empty.add_property_map<Mesh3::Halfedge_index, Point_2>("h:uv").first;
   EXPECT_THROW(DO::compute_atlas(empty, none, DO::Symmetric_dirichlet()), DO::Invalid_input);

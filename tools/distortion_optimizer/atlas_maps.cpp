@@ -49,11 +49,19 @@ int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& 
   auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:atlas_uv").first;
   auto value = mesh.add_property_map<Mesh::Face_index, double>("f:atlas_distortion").first;
   const DO::Any_measure measure = measure_of(c);
-  const DO::Atlas_result a = DO::compute_atlas(
+  // The library's messages name faces and vertices by their index in the source: say which file.
+  const auto in_source = [&](auto&& run) {
+    try {
+      return run();
+    } catch(const DO::Invalid_input& e) {
+      throw DO::Invalid_input(printable(c.source) + ": " + e.what());
+    }
+  };
+  const DO::Atlas_result a = in_source([&] { return DO::compute_atlas(
     mesh, uv, measure,
     DO::parameters::cell_distortion_map(value, DO::parameters::edge_is_seam_map(seam, DO::parameters::max_distortion(c.max_distortion,
       DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256))))))
-      .number_of_iterations(c.iterations));
+      .number_of_iterations(c.iterations)); });
 
   // The surface as read, with one vt per distinct UV of a vertex (a vertex on a seam has several).
   DO::IO::Triangle_soup textured;

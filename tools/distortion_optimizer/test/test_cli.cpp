@@ -377,6 +377,9 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
   EXPECT_EQ(json_value(slurp(bounded), "inverted_cells"), 0);
   EXPECT_EQ(json_value(slurp(bounded), "overlapping_charts"), 0);
   const std::string none = temp("not_written.obj");
+  std::ofstream(temp("flat_tetrahedron.off")) << "OFF\n4 4 0\n0 0 0\n1 0 0\n2 0 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  expect_failed_cleanly(run("--source " + temp("flat_tetrahedron.off") + " --output " + none),
+                        "flat_tetrahedron.off: face 0 is degenerate (its corners are collinear)", none);
   expect_failed_cleanly(run("--source " + data("nefertiti.off") + " --output " + none + " --max-distortion 1.1"), "needs none", none);
   const Tool_run usage = run("--source " + data("eight.off") + " --output " + none + " --max-distortion 0.5");
   EXPECT_EQ(usage.status, 2);

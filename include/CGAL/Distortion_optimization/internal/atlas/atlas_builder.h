@@ -115,9 +115,14 @@ private:
   {
     Mesh all;
     for(const auto& p : points_) all.add_vertex(K::Point_3(p[0], p[1], p[2]));
-    for(std::size_t f = 0; f < faces_.size(); ++f)
-      if(all.add_face(Vertex(faces_[f][0]), Vertex(faces_[f][1]), Vertex(faces_[f][2])) == Mesh::null_face())
+    for(std::size_t f = 0; f < faces_.size(); ++f) {
+      const Vertex a(faces_[f][0]), b(faces_[f][1]), c(faces_[f][2]);
+      // A face without area has no frame to measure the map in.
+      if(CGAL::collinear(all.point(a), all.point(b), all.point(c)))
+        throw Invalid_input("face " + std::to_string(f) + " is degenerate (its corners are collinear)");
+      if(all.add_face(a, b, c) == Mesh::null_face())
         throw Invalid_input("face " + std::to_string(f) + " makes the surface non-manifold or inconsistently oriented");
+    }
     auto piece_of = all.add_property_map<Mesh::Face_index, std::size_t>("f:piece").first;
     const std::size_t n = faces_.empty() ? 0 : CGAL::Polygon_mesh_processing::connected_components(all, piece_of);
     if(n == 0) throw Invalid_input("the surface has no face");
