@@ -76,35 +76,54 @@ std::vector<typename Mesh::Vertex_index> place_cones(const Mesh& m, const std::v
     fixed[std::size_t(sharpest)] = true;
   }
   const bool needs_a_cut = cones.size() == 1;
+  // One factorization: a cone c added later is a point source at c whose strength makes u(c) = 0,
+  // so that u = u0 + sum_j a_j g_j, with g_j the solution for a unit source at cone j (one solve
+  // each with the same factor) and a the small system G_CC a = -u0_C.
   std::vector<int> column(m.number_of_vertices());
+  int size = 0;
+  for(auto v : m.vertices()) column[std::size_t(v)] = fixed[std::size_t(v)] ? -1 : size++;
+  if(size == 0) return cones;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs(size);
+  for(auto v : m.vertices())
+    if(column[std::size_t(v)] >= 0) rhs[column[std::size_t(v)]] = -defect[std::size_t(v)];
+  for(auto e : m.edges()) {
+    const int a = column[std::size_t(m.vertex(e, 0))], b = column[std::size_t(m.vertex(e, 1))];
+    const double w = weight[std::size_t(e)];
+    if(a >= 0) entries.emplace_back(a, a, w);
+    if(b >= 0) entries.emplace_back(b, b, w);
+    if(a >= 0 && b >= 0) entries.emplace_back((std::max)(a, b), (std::min)(a, b), -w);
+  }
+  Eigen::SparseMatrix<double> L(size, size);
+  L.setFromTriplets(entries.begin(), entries.end());
+  Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from, Fill_reducing_order::MINIMUM_DEGREE);
+  if(!factorization.factorize(L)) return cones;
+  const Eigen::VectorXd u0 = factorization.solve(rhs);
+  Eigen::VectorXd u = u0;
+  std::vector<int> source;          // the later cones' columns
+  std::vector<Eigen::VectorXd> green;
   while(cones.size() < max_cones) {
-    int size = 0;
-    for(auto v : m.vertices()) column[std::size_t(v)] = fixed[std::size_t(v)] ? -1 : size++;
-    if(size == 0) break;
-    std::vector<Eigen::Triplet<double>> entries;
-    Eigen::VectorXd rhs(size);
-    for(auto v : m.vertices())
-      if(column[std::size_t(v)] >= 0) rhs[column[std::size_t(v)]] = -defect[std::size_t(v)];
-    for(auto e : m.edges()) {
-      const int a = column[std::size_t(m.vertex(e, 0))], b = column[std::size_t(m.vertex(e, 1))];
-      const double w = weight[std::size_t(e)];
-      if(a >= 0) entries.emplace_back(a, a, w);
-      if(b >= 0) entries.emplace_back(b, b, w);
-      if(a >= 0 && b >= 0) entries.emplace_back((std::max)(a, b), (std::min)(a, b), -w);
-    }
-    Eigen::SparseMatrix<double> L(size, size);
-    L.setFromTriplets(entries.begin(), entries.end());
-    Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from, Fill_reducing_order::MINIMUM_DEGREE);
-    if(!factorization.factorize(L)) break;
-    const Eigen::VectorXd u = factorization.solve(rhs);
     Vertex largest = Mesh::null_vertex();
     double magnitude = 0;
-    for(auto v : m.vertices())
-      if(column[std::size_t(v)] >= 0 && std::abs(u[column[std::size_t(v)]]) > magnitude)
-        magnitude = std::abs(u[column[std::size_t(v)]]), largest = v;
+    for(auto v : m.vertices()) {
+      const int i = column[std::size_t(v)];
+      if(i >= 0 && std::find(source.begin(), source.end(), i) == source.end() && std::abs(u[i]) > magnitude)
+        magnitude = std::abs(u[i]), largest = v;
+    }
     if(largest == Mesh::null_vertex() || !(magnitude > max_log_scale || (needs_a_cut && cones.size() < 2))) break;
     cones.push_back(largest);
-    fixed[std::size_t(largest)] = true;
+    source.push_back(column[std::size_t(largest)]);
+    green.push_back(factorization.solve(Eigen::VectorXd::Unit(size, source.back())));
+    const std::size_t k = source.size();
+    Eigen::MatrixXd G(k, k);
+    Eigen::VectorXd b(k);
+    for(std::size_t i = 0; i < k; ++i) {
+      b[i] = -u0[source[i]];
+      for(std::size_t j = 0; j < k; ++j) G(i, j) = green[j][source[i]];
+    }
+    const Eigen::VectorXd strength = G.ldlt().solve(b);
+    u = u0;
+    for(std::size_t j = 0; j < k; ++j) u += strength[j] * green[j];
   }
   return cones;
 }
