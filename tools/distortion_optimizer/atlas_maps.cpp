@@ -61,7 +61,7 @@ int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& 
     mesh, uv, measure,
     DO::parameters::cell_distortion_map(value, DO::parameters::edge_is_seam_map(seam, DO::parameters::max_distortion(c.max_distortion,
       DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256))))))
-      .number_of_iterations(c.iterations)); });
+      .number_of_iterations(c.iterations).visitor(Progress(c))); });
 
   // The surface as read, with one vt per distinct UV of a vertex (a vertex on a seam has several).
   DO::IO::Triangle_soup textured;
@@ -88,6 +88,7 @@ int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& 
   r.iterations = a.iterations;
   r.seconds = a.seconds;
   r.inverted_cells = a.inverted_faces;
+  r.stopped_by_visitor = a.stopped_by_visitor;
   // The pictures: each face's UV triangle (its corners apart, as the seams have them).
   DO::IO::Svg_panel map;
   if(!c.svg.empty()) {

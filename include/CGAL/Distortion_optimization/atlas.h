@@ -13,6 +13,7 @@
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/atlas/atlas_builder.h>
+#include <CGAL/Distortion_optimization/internal/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -45,6 +46,7 @@ struct Atlas_result
   std::size_t overlapping_charts = 0; ///< charts whose border crosses itself or another's: 0
   std::size_t iterations = 0;         ///< iterations of the charts' optimizations, summed
   double seconds = 0;                 ///< wall-clock time
+  bool stopped_by_visitor = false;    ///< the visitor returned false (the charts are valid, less optimized)
 };
 
 namespace internal_np {
@@ -100,6 +102,7 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
   \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more seams} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the most iterations of each chart's optimization} \cgalParamDefault{100} \cgalParamNEnd
+  \cgalParamNBegin{visitor} \cgalParamDescription{called as `visitor(iteration, energy)` or `visitor(iteration, energy, inverted)` after each iteration of the charts' optimizations, numbered across them; `false` stops them, and the charts not yet flattened keep their Tutte start} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_threads} \cgalParamDescription{as for `CGAL::minimize_distortion()`} \cgalParamDefault{1} \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -122,6 +125,7 @@ Atlas_result compute_atlas(const TriangleMesh& tm, HalfedgeUVMap uv, const Measu
   options.max_distortion = choose_parameter(get_parameter(np, internal_np::max_distortion), 0.);
   options.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(100));
   options.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1);
+  options.visitor = internal::read_options(np).visitor;
   if(!(options.gutter >= 0 && options.gutter < 0.25)) throw Invalid_input("compute_atlas(): the gutter must be in [0, 0.25)");
   if(!(options.max_log_scale > 0)) throw Invalid_input("compute_atlas(): the cones' log scale bound must be positive");
   if(!(options.max_distortion >= 0)) throw Invalid_input("compute_atlas(): the distortion bound must be positive");
@@ -191,6 +195,7 @@ Atlas_result compute_atlas(const TriangleMesh& tm, HalfedgeUVMap uv, const Measu
   r.inverted_faces = a.inverted_faces;
   r.overlapping_charts = a.overlapping_charts;
   r.iterations = a.iterations;
+  r.stopped_by_visitor = a.stopped_by_visitor;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -376,6 +376,14 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
   EXPECT_GT(json_value(slurp(bounded), "seam_length_fraction"), json_value(report, "seam_length_fraction"));
   EXPECT_EQ(json_value(slurp(bounded), "inverted_cells"), 0);
   EXPECT_EQ(json_value(slurp(bounded), "overlapping_charts"), 0);
+  // --time-limit stops the charts' optimizations too: the atlas is written, valid, less optimized.
+  const std::string limited = temp("eight_limited.json");
+  ASSERT_EQ(run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --time-limit 1e-9 --report " +
+                limited).status, 0);
+  EXPECT_NE(slurp(limited).find("\"stopped_by_time_limit\": true"), std::string::npos);
+  EXPECT_EQ(json_value(slurp(limited), "inverted_cells"), 0);
+  EXPECT_EQ(json_value(slurp(limited), "overlapping_charts"), 0);
+  EXPECT_GT(json_value(slurp(limited), "final_energy"), json_value(report, "final_energy"));
   const std::string none = temp("not_written.obj");
   std::ofstream(temp("flat_tetrahedron.off")) << "OFF\n4 4 0\n0 0 0\n1 0 0\n2 0 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
   expect_failed_cleanly(run("--source " + temp("flat_tetrahedron.off") + " --output " + none),

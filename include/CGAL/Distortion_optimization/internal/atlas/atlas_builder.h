@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,9 @@ struct Atlas_options
   std::size_t iterations = 100;       // of each chart's minimize_distortion()
   int threads = 1;
   std::vector<std::array<std::uint32_t, 2>> seams;   // the user's, as vertex pairs of edges
+  // Called after each iteration of every chart's optimization (numbered across them); false
+  // stops the optimizations, and the charts not yet flattened keep their Tutte start.
+  std::function<bool(std::size_t, double, std::size_t)> visitor;
 };
 
 // What the atlas has: each face's chart and its corners' UVs, the seams, and the figures.
@@ -58,6 +62,7 @@ struct Atlas_arrays
   double seam_length = 0, edge_length = 0, packing_efficiency = 0;
   double mean_distortion = 0, max_distortion = 0;   // area-weighted mean over the surface; largest of a face
   std::size_t inverted_faces = 0, overlapping_charts = 0, iterations = 0;
+  bool stopped_by_visitor = false;
 };
 
 template <class Measure>
@@ -205,7 +210,11 @@ private:
     auto uv = chart.add_property_map<Vertex, K::Point_2>("v:uv").first;
     auto value = chart.add_property_map<Mesh::Face_index, double>("f:distortion").first;
     initial_parameterization(chart, uv);
-    const Result r = flatten_with_scaffold(chart, uv, measure_, options_.iterations, options_.threads);
+    const auto visit = [this](std::size_t, double energy, std::size_t inverted) {
+      stopped_ = options_.visitor && !options_.visitor(++visited_, energy, inverted);
+      return !stopped_;
+    };
+    const Result r = flatten_with_scaffold(chart, uv, measure_, stopped_ ? 0 : options_.iterations, options_.threads, visit);
     piece.embedded = is_boundary_embedded(chart, uv);
     const Distortion_statistics s = CGAL::compute_distortion(chart, uv, measure_, parameters::cell_distortion_map(value));
     piece.mean = s.mean_volume, piece.max = s.max, piece.inverted = s.inverted_cells, piece.iterations = r.iterations;
@@ -247,6 +256,7 @@ private:
     a.face_distortion.resize(faces_.size());
     a.charts = pieces_.size();
     a.packing_efficiency = efficiency_;
+    a.stopped_by_visitor = stopped_;
     double area = 0;
     for(std::size_t k = 0; k < pieces_.size(); ++k) {
       const Piece& piece = pieces_[k];
@@ -284,6 +294,8 @@ private:
   Atlas_options options_;
   std::vector<Piece> pieces_;
   double efficiency_ = 0;
+  bool stopped_ = false;       // the visitor stopped the optimizations
+  std::size_t visited_ = 0;    // iterations reported to it
 };
 
 } // namespace internal

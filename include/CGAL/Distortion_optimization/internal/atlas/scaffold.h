@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <list>
 #include <map>
@@ -99,11 +100,12 @@ inline std::vector<std::array<std::uint32_t, 3>> scaffold_triangles(const std::v
 // Minimizes `measure` on `chart` (a Surface_mesh of genus 0, a disk or a disk with holes) from the
 // map `uv` (one-to-one), every vertex free: rounds of two of minimize()'s iterations on the chart
 // with its scaffold, the scaffold made anew from each round's map, until a round gains less than
-// 1e-4 of the energy or `iterations` are done. The scaffold's triangles
+// 1e-4 of the energy, `iterations` are done or `visitor` (called after each iteration) returns false. The scaffold's triangles
 // measure against their own shape when made, with a small weight (a hundredth of the chart's,
 // spread evenly), so that they only resist being flattened.
 template <class Mesh, class UVMap, class Measure>
-Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure, std::size_t iterations, int threads)
+Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure, std::size_t iterations, int threads,
+                             const std::function<bool(std::size_t, double, std::size_t)>& visitor = {})
 {
   const auto start = std::chrono::steady_clock::now();
   const CGAL::Constant_property_map<typename Mesh::Vertex_index, bool> constrained(false);
@@ -123,6 +125,7 @@ Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure
   options.iterations = (std::min)(iterations, std::size_t(2));
   options.harmonic_start = false;
   options.threads = threads;
+  options.visitor = visitor;
   std::vector<Vector<2>> x = base.map.target;
   Result result;
   double previous = std::numeric_limits<double>::infinity();
@@ -168,6 +171,10 @@ Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure
     result.final_energy = r.final_energy;
     result.energy_per_iteration.push_back(r.final_energy);
     result.inverted_cells = r.inverted_cells;
+    if(r.stopped_by_visitor) {
+      result.stopped_by_visitor = true;
+      break;
+    }
     if(!(previous - r.final_energy > 1e-4 * std::abs(r.final_energy))) {
       result.converged = true;
       break;
