@@ -36,7 +36,7 @@ namespace Distortion_optimization {
 /// What `compute_atlas()` returns.
 struct Atlas_result
 {
-  std::size_t charts = 0;             ///< charts (one per connected piece of the surface)
+  std::size_t charts = 0;             ///< charts (a connected piece of the surface, or a part of one split for packing)
   std::size_t cones = 0;              ///< cone vertices the seams were drawn to
   double seam_length_fraction = 0;    ///< the seams' length over the length of all edges
   double packing_efficiency = 0;      ///< the charts' UV area over that of the rectangle bounding them all
@@ -53,6 +53,7 @@ namespace internal_np {
 enum face_chart_map_t { face_chart_map };
 enum edge_is_seam_map_t { edge_is_seam_map };
 enum atlas_gutter_t { atlas_gutter };
+enum min_chart_fill_t { min_chart_fill };
 enum cone_log_scale_t { cone_log_scale };
 enum max_distortion_t { max_distortion };
 } // namespace internal_np
@@ -65,6 +66,10 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(face_chart_map_t, face_chart_ma
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(edge_is_seam_map_t, edge_is_seam_map)
 /// The space between charts and about them, a fraction of the unit square's side (`compute_atlas()`); default 0.01.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(atlas_gutter_t, atlas_gutter)
+/// A chart that fills less than this of its least bounding rectangle is split for packing, along
+/// straight lines in its UV plane (its map unchanged; the cuts become seams) (`compute_atlas()`);
+/// default 0.6, 0 never splits.
+CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(min_chart_fill_t, min_chart_fill)
 /// Cones are placed until the conformal flattening's log scale factor is at most this everywhere
 /// (`compute_atlas()`); default 1: smaller values give more cones and longer seams.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cone_log_scale_t, cone_log_scale)
@@ -78,7 +83,7 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(max_distortion_t, max_distortio
 Computes a texture atlas of the triangle surface `tm`, of any topology: each connected piece is
 cut open along seams into one chart of genus 0 (a disk, or a disk with holes), each chart is
 flattened with `measure` minimized, no triangle inverted and no chart's border crossing itself,
-and the charts are packed into the unit square at one common scale (the same texel density
+a chart that fills its bounding rectangle poorly is split (`min_chart_fill`), and the charts are packed into the unit square at one common scale (the same texel density
 everywhere), turned but never mirrored, `atlas_gutter` apart.
 
 The seams: the loops of a tree-cotree decomposition open the handles (Erickson and Whittlesey's
@@ -99,6 +104,7 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{cell_distortion_map} \cgalParamDescription{receives the measure's value on each face} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{edge_is_seam_map} \cgalParamDescription{the user's seams (edges flagged true; a border edge is no seam), then on return every seam} \cgalParamDefault{no seam given, none returned} \cgalParamNEnd
   \cgalParamNBegin{atlas_gutter} \cgalParamDescription{space between charts and about them, a fraction of the square's side, in [0, 0.25)} \cgalParamDefault{0.01} \cgalParamNEnd
+  \cgalParamNBegin{min_chart_fill} \cgalParamDescription{a chart filling less of its least bounding rectangle is split for packing, in [0, 1)} \cgalParamDefault{0.6} \cgalParamNEnd
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
   \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more seams} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the most iterations of each chart's optimization} \cgalParamDefault{100} \cgalParamNEnd
@@ -121,12 +127,14 @@ Atlas_result compute_atlas(const TriangleMesh& tm, HalfedgeUVMap uv, const Measu
   const auto start = std::chrono::steady_clock::now();
   internal::Atlas_options options;
   options.gutter = choose_parameter(get_parameter(np, internal_np::atlas_gutter), 0.01);
+  options.min_fill = choose_parameter(get_parameter(np, internal_np::min_chart_fill), 0.6);
   options.max_log_scale = choose_parameter(get_parameter(np, internal_np::cone_log_scale), 1.);
   options.max_distortion = choose_parameter(get_parameter(np, internal_np::max_distortion), 0.);
   options.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(100));
   options.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1);
   options.visitor = internal::read_options(np).visitor;
   if(!(options.gutter >= 0 && options.gutter < 0.25)) throw Invalid_input("compute_atlas(): the gutter must be in [0, 0.25)");
+  if(!(options.min_fill >= 0 && options.min_fill < 1)) throw Invalid_input("compute_atlas(): the least chart fill must be in [0, 1)");
   if(!(options.max_log_scale > 0)) throw Invalid_input("compute_atlas(): the cones' log scale bound must be positive");
   if(!(options.max_distortion >= 0)) throw Invalid_input("compute_atlas(): the distortion bound must be positive");
 

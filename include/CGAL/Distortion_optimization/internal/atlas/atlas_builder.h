@@ -19,6 +19,7 @@
 #include <CGAL/Distortion_optimization/internal/atlas/cut_mesh.h>
 #include <CGAL/Distortion_optimization/internal/atlas/pack_charts.h>
 #include <CGAL/Distortion_optimization/internal/atlas/scaffold.h>
+#include <CGAL/Distortion_optimization/internal/atlas/split_charts.h>
 #include <CGAL/compute_distortion.h>
 #include <CGAL/minimize_distortion.h>
 
@@ -43,6 +44,7 @@ struct Atlas_options
   double max_log_scale = 1;           // the cones' bound on the conformal flattening's log scale
   double max_distortion = 0;          // a chart's mean distortion above it cuts further (0: no bound)
   double gutter = 0.01;               // between charts, a fraction of the square's side
+  double min_fill = 0.6;              // a chart filling less of its bounding rectangle is split
   std::size_t iterations = 100;       // of each chart's minimize_distortion()
   int threads = 1;
   std::vector<std::array<std::uint32_t, 2>> seams;   // the user's, as vertex pairs of edges
@@ -94,6 +96,7 @@ public:
         flatten(piece);
       }
     }
+    for(Piece& piece : pieces_) split(piece);
     pack();
     return collect();
   }
@@ -110,6 +113,9 @@ private:
     std::vector<std::array<std::uint32_t, 3>> corner;   // the chart's vertex at each corner of each face
     std::vector<Vector<2>> uv;                      // by chart vertex
     std::vector<double> value;                      // the measure's value on each face
+    std::vector<std::uint32_t> part;                // the chart each face is packed with (split_charts.h)
+    std::uint32_t parts = 1;
+    std::vector<std::array<Vector<2>, 3>> corner_uv;   // packed, by face
     double area = 0, uv_area = 0, mean = 0, max = 0;
     std::size_t inverted = 0, iterations = 0;
     bool embedded = true;
@@ -231,7 +237,20 @@ private:
     }
   }
 
-  // Every chart at one scale (the same texel density), then packed.
+  // A flattened piece that fills its bounding rectangle poorly, split into charts for packing.
+  void split(Piece& piece)
+  {
+    piece.part = split_for_packing(piece.corner, piece.uv, options_.min_fill);
+    piece.parts = piece.part.empty() ? 0 : *std::max_element(piece.part.begin(), piece.part.end()) + 1;
+    for(auto e : piece.mesh.edges()) {
+      const auto h = piece.mesh.halfedge(e), g = piece.mesh.opposite(h);
+      if(!piece.mesh.is_border(e) && piece.part[std::size_t(piece.mesh.face(h))] != piece.part[std::size_t(piece.mesh.face(g))])
+        piece.seam[std::size_t(e)] = true;
+    }
+  }
+
+  // Every chart at one scale (the same texel density), then packed; each face's corners get their
+  // chart's packed UVs.
   void pack()
   {
     double area = 0, uv_area = 0;
@@ -239,13 +258,36 @@ private:
     const double s = uv_area > 0 ? std::sqrt(area / uv_area) : 1;
     std::vector<std::vector<Vector<2>>> charts;
     std::vector<double> chart_area;
+    std::vector<std::vector<std::int64_t>> local;   // by piece: each chart vertex's index in its chart's list
     for(Piece& piece : pieces_) {
-      for(auto& p : piece.uv) p *= s;
-      charts.push_back(piece.uv);
-      chart_area.push_back(piece.uv_area * s * s);
+      const std::size_t first = charts.size();
+      charts.resize(first + piece.parts);
+      chart_area.resize(first + piece.parts, 0);
+      local.emplace_back(piece.corner.size() * 3, -1);
+      std::vector<std::int64_t> at(piece.uv.size(), -1);
+      std::vector<std::uint32_t> stamp(piece.uv.size(), std::uint32_t(-1));
+      for(std::size_t f = 0; f < piece.corner.size(); ++f) {
+        const std::uint32_t k = piece.part[f];
+        auto& chart = charts[first + k];
+        for(int i = 0; i < 3; ++i) {
+          const std::uint32_t v = piece.corner[f][i];
+          if(stamp[v] != k) stamp[v] = k, at[v] = std::int64_t(chart.size()), chart.push_back(s * piece.uv[v]);
+          local.back()[3 * f + i] = at[v];
+        }
+        const Vector<2> a = piece.uv[piece.corner[f][1]] - piece.uv[piece.corner[f][0]];
+        const Vector<2> b = piece.uv[piece.corner[f][2]] - piece.uv[piece.corner[f][0]];
+        chart_area[first + k] += 0.5 * s * s * (a[0] * b[1] - a[1] * b[0]);
+      }
     }
     efficiency_ = pack_charts(charts, chart_area, options_.gutter);
-    for(std::size_t k = 0; k < pieces_.size(); ++k) pieces_[k].uv = charts[k];
+    std::size_t first = 0;
+    for(std::size_t n = 0; n < pieces_.size(); ++n) {
+      Piece& piece = pieces_[n];
+      piece.corner_uv.resize(piece.corner.size());
+      for(std::size_t f = 0; f < piece.corner.size(); ++f)
+        for(int i = 0; i < 3; ++i) piece.corner_uv[f][i] = charts[first + piece.part[f]][std::size_t(local[n][3 * f + i])];
+      first += piece.parts;
+    }
   }
 
   Atlas_arrays collect() const
@@ -254,20 +296,18 @@ private:
     a.corner_uv.resize(faces_.size());
     a.chart.resize(faces_.size());
     a.face_distortion.resize(faces_.size());
-    a.charts = pieces_.size();
+    a.charts = 0;
     a.packing_efficiency = efficiency_;
     a.stopped_by_visitor = stopped_;
     double area = 0;
     for(std::size_t k = 0; k < pieces_.size(); ++k) {
       const Piece& piece = pieces_[k];
       for(std::size_t f = 0; f < piece.face.size(); ++f) {
-        a.chart[piece.face[f]] = k;
+        a.chart[piece.face[f]] = a.charts + piece.part[f];
         a.face_distortion[piece.face[f]] = piece.value[f];
-        for(int i = 0; i < 3; ++i) {
-          const Vector<2>& p = piece.uv[piece.corner[f][i]];
-          a.corner_uv[piece.face[f]][i] = {p[0], p[1]};
-        }
+        for(int i = 0; i < 3; ++i) a.corner_uv[piece.face[f]][i] = {piece.corner_uv[f][i][0], piece.corner_uv[f][i][1]};
       }
+      a.charts += piece.parts;
       for(auto e : piece.mesh.edges()) {
         const double l = edge_length(piece.mesh, e);
         a.edge_length += l;

@@ -22,18 +22,25 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
-// Turns `uv` about the origin so that the rectangle bounding it has the least area among those
-// with a side along an edge of its convex hull (one of them is the least of all: Freeman and
-// Shapira, "Determining the minimum-area encasing rectangle for an arbitrary closed curve", 1975),
-// its longer side along u. A rotation: no chart is mirrored.
-inline void turn_to_least_bounding_rectangle(std::vector<Vector<2>>& uv)
+// The rectangle of least area bounding `uv` among those with a side along an edge of its convex
+// hull (one of them is the least of all: Freeman and Shapira, "Determining the minimum-area
+// encasing rectangle for an arbitrary closed curve", 1975): the direction (c, s) of its longer
+// side, and its area.
+struct Bounding_rectangle
+{
+  double c = 1, s = 0, area = 0;
+};
+
+inline Bounding_rectangle least_bounding_rectangle(const std::vector<Vector<2>>& uv)
 {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_2;
   std::vector<Point> points, hull;
   for(const auto& p : uv) points.emplace_back(p[0], p[1]);
   CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
-  if(hull.size() < 3) return;
-  double best = std::numeric_limits<double>::infinity(), best_c = 1, best_s = 0, width = 0, height = 0;
+  Bounding_rectangle best;
+  if(hull.size() < 3) return best;
+  best.area = std::numeric_limits<double>::infinity();
+  double width = 0, height = 0;
   for(std::size_t i = 0; i < hull.size(); ++i) {
     const Point &a = hull[i], &b = hull[(i + 1) % hull.size()];
     const double dx = b.x() - a.x(), dy = b.y() - a.y(), length = std::hypot(dx, dy);
@@ -44,13 +51,18 @@ inline void turn_to_least_bounding_rectangle(std::vector<Vector<2>>& uv)
       const double u = c * p.x() + s * p.y(), v = -s * p.x() + c * p.y();
       u0 = (std::min)(u0, u), u1 = (std::max)(u1, u), v0 = (std::min)(v0, v), v1 = (std::max)(v1, v);
     }
-    if((u1 - u0) * (v1 - v0) < best) best = (u1 - u0) * (v1 - v0), best_c = c, best_s = s, width = u1 - u0, height = v1 - v0;
+    if((u1 - u0) * (v1 - v0) < best.area) best = {c, s, (u1 - u0) * (v1 - v0)}, width = u1 - u0, height = v1 - v0;
   }
-  if(height > width) {   // a quarter turn more: the longer side along u
-    const double c = -best_s, s = best_c;
-    best_c = c, best_s = s;
-  }
-  for(auto& p : uv) p = Vector<2>(best_c * p[0] + best_s * p[1], -best_s * p[0] + best_c * p[1]);
+  if(height > width) best = {-best.s, best.c, best.area};   // a quarter turn more: the longer side along u
+  return best;
+}
+
+// Turns `uv` about the origin so that its least bounding rectangle is axis-aligned, its longer
+// side along u. A rotation: no chart is mirrored.
+inline void turn_to_least_bounding_rectangle(std::vector<Vector<2>>& uv)
+{
+  const Bounding_rectangle r = least_bounding_rectangle(uv);
+  for(auto& p : uv) p = Vector<2>(r.c * p[0] + r.s * p[1], -r.s * p[0] + r.c * p[1]);
 }
 
 // Places the charts (each a list of UVs, turned to their least bounding rectangle) side by side in
@@ -74,20 +86,35 @@ inline double pack_charts(std::vector<std::vector<Vector<2>>>& charts, const std
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return h[a] > h[b]; });
-  // The gap is a fraction of the final side, which depends on the gap: two passes settle it.
+  // Shelves of the width (of eleven tried, from the widest chart up to twice the square the
+  // rectangles would fill) whose layout fills its bounding rectangle best, among those no more
+  // than twice as long as wide (the texture is square). The gap is a fraction of the
+  // final side, which depends on the gap: two passes settle it.
   double side = std::sqrt(rectangles), extent_u = 0, extent_v = 0;
   std::vector<double> at_u(n), at_v(n);
-  for(int pass = 0; pass < 2; ++pass) {
-    const double gap = gutter * side, shelf_width = (std::max)(widest, std::sqrt(rectangles) * 1.05);
+  const auto shelve = [&](double shelf_width, double gap, std::vector<double>& x, std::vector<double>& y, double& eu, double& ev) {
     double u = 0, v = 0, shelf_height = 0;
-    extent_u = extent_v = 0;
+    eu = ev = 0;
     for(std::size_t k : order) {
       if(u > 0 && u + w[k] > shelf_width) u = 0, v += shelf_height + gap, shelf_height = 0;
-      at_u[k] = u, at_v[k] = v;
+      x[k] = u, y[k] = v;
       u += w[k] + gap;
       shelf_height = (std::max)(shelf_height, h[k]);
-      extent_u = (std::max)(extent_u, at_u[k] + w[k]);
-      extent_v = (std::max)(extent_v, at_v[k] + h[k]);
+      eu = (std::max)(eu, x[k] + w[k]);
+      ev = (std::max)(ev, y[k] + h[k]);
+    }
+  };
+  for(int pass = 0; pass < 2; ++pass) {
+    const double gap = gutter * side;
+    double best = -1;
+    std::vector<double> x(n), y(n);
+    for(int i = 0; i <= 10; ++i) {
+      const double shelf_width = (std::max)(widest, std::sqrt(rectangles) * (1 + 0.1 * i));
+      double eu = 0, ev = 0;
+      shelve(shelf_width, gap, x, y, eu, ev);
+      const double fill = rectangles / (eu * ev);
+      if((i == 0 || (std::max)(eu, ev) <= 2 * (std::min)(eu, ev)) && fill > best)
+        best = fill, at_u = x, at_v = y, extent_u = eu, extent_v = ev;
     }
     side = (std::max)(extent_u, extent_v) / (1 - 2 * gutter);
   }
