@@ -57,11 +57,14 @@ int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& 
       throw DO::Invalid_input(printable(c.source) + ": " + e.what());
     }
   };
-  const DO::Atlas_result a = in_source([&] { return DO::compute_atlas(
-    mesh, uv, measure,
-    DO::parameters::cell_distortion_map(value, DO::parameters::edge_is_seam_map(seam, DO::parameters::max_distortion(c.max_distortion,
-      DO::parameters::number_of_threads(static_cast<int>(std::min<std::size_t>(c.threads, 256))))))
-      .number_of_iterations(c.iterations).visitor(Progress(c))); });
+  // The optimizer's options as for any map (--schedule, --threshold, --solver, ...); every vertex
+  // weighs 1 (--vertex-weights is refused above).
+  auto weights = mesh.add_property_map<Vertex, double>("v:atlas_weight", 1.).first;
+  const DO::Atlas_result a = in_source([&] {
+    return DO::compute_atlas(mesh, uv, measure,
+                             DO::parameters::cell_distortion_map(value, DO::parameters::edge_is_seam_map(seam,
+                               DO::parameters::max_distortion(c.max_distortion, common_parameters(c, weights)))));
+  });
 
   // The surface as read, with one vt per distinct UV of a vertex (a vertex on a seam has several).
   DO::IO::Triangle_soup textured;

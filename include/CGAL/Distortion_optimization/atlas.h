@@ -108,6 +108,7 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
   \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more seams} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the most iterations of each chart's optimization} \cgalParamDefault{100} \cgalParamNEnd
+  \cgalParamNBegin{convergence_threshold, schedule, local_solver, global_solver, cell_weighting, vertex_order, parallel_sweep} \cgalParamDescription{each chart's optimization's, as for `CGAL::minimize_distortion()` (the scaffold is remade every two iterations; the threshold is the relative gain under which the rounds stop)} \cgalParamDefault{theirs} \cgalParamNEnd
   \cgalParamNBegin{visitor} \cgalParamDescription{called as `visitor(iteration, energy)` or `visitor(iteration, energy, inverted)` after each iteration of the charts' optimizations, numbered across them; `false` stops them, and the charts not yet flattened keep their Tutte start} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_threads} \cgalParamDescription{as for `CGAL::minimize_distortion()`} \cgalParamDefault{1} \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -130,9 +131,8 @@ Atlas_result compute_atlas(const TriangleMesh& tm, HalfedgeUVMap uv, const Measu
   options.min_fill = choose_parameter(get_parameter(np, internal_np::min_chart_fill), 0.6);
   options.max_log_scale = choose_parameter(get_parameter(np, internal_np::cone_log_scale), 1.);
   options.max_distortion = choose_parameter(get_parameter(np, internal_np::max_distortion), 0.);
-  options.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(100));
-  options.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1);
-  options.visitor = internal::read_options(np).visitor;
+  options.optimizer = internal::read_options(np);
+  options.weighting = choose_parameter(get_parameter(np, internal_np::cell_weighting), Cell_weighting::AVERAGE_VOLUME);
   if(!(options.gutter >= 0 && options.gutter < 0.25)) throw Invalid_input("compute_atlas(): the gutter must be in [0, 0.25)");
   if(!(options.min_fill >= 0 && options.min_fill < 1)) throw Invalid_input("compute_atlas(): the least chart fill must be in [0, 1)");
   if(!(options.max_log_scale > 0)) throw Invalid_input("compute_atlas(): the cones' log scale bound must be positive");

@@ -376,6 +376,16 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
   EXPECT_GT(json_value(slurp(bounded), "seam_length_fraction"), json_value(report, "seam_length_fraction"));
   EXPECT_EQ(json_value(slurp(bounded), "inverted_cells"), 0);
   EXPECT_EQ(json_value(slurp(bounded), "overlapping_charts"), 0);
+  // The optimizer's options apply to the charts: a loose threshold stops sooner; local sweeps
+  // with BFGS keep the charts valid.
+  const std::string loose = temp("eight_loose.json"), local = temp("eight_local.json");
+  ASSERT_EQ(run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --threshold 0.5 --report " +
+                loose).status, 0);
+  EXPECT_LT(json_value(slurp(loose), "sweeps"), json_value(report, "sweeps"));
+  ASSERT_EQ(run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --schedule local --solver bfgs "
+                "--iterations 20 --report " + local).status, 0);
+  EXPECT_EQ(json_value(slurp(local), "inverted_cells"), 0);
+  EXPECT_EQ(json_value(slurp(local), "overlapping_charts"), 0);
   // --time-limit stops the charts' optimizations too: the atlas is written, valid, less optimized.
   const std::string limited = temp("eight_limited.json");
   ASSERT_EQ(run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --time-limit 1e-9 --report " +

@@ -45,12 +45,12 @@ struct Atlas_options
   double max_distortion = 0;          // a chart's mean distortion above it cuts further (0: no bound)
   double gutter = 0.01;               // between charts, a fraction of the square's side
   double min_fill = 0.6;              // a chart filling less of its bounding rectangle is split
-  std::size_t iterations = 100;       // of each chart's minimize_distortion()
-  int threads = 1;
   std::vector<std::array<std::uint32_t, 2>> seams;   // the user's, as vertex pairs of edges
-  // Called after each iteration of every chart's optimization (numbered across them); false
-  // stops the optimizations, and the charts not yet flattened keep their Tutte start.
-  std::function<bool(std::size_t, double, std::size_t)> visitor;
+  // Each chart's optimization (flatten_with_scaffold()): minimize_distortion()'s options. Its
+  // visitor is called after each iteration of every chart's (numbered across them); false stops
+  // the optimizations, and the charts not yet flattened keep their Tutte start.
+  Options optimizer;
+  Cell_weighting weighting = Cell_weighting::AVERAGE_VOLUME;
 };
 
 // What the atlas has: each face's chart and its corners' UVs, the seams, and the figures.
@@ -217,10 +217,13 @@ private:
     auto value = chart.add_property_map<Mesh::Face_index, double>("f:distortion").first;
     initial_parameterization(chart, uv);
     const auto visit = [this](std::size_t, double energy, std::size_t inverted) {
-      stopped_ = options_.visitor && !options_.visitor(++visited_, energy, inverted);
+      stopped_ = options_.optimizer.visitor && !options_.optimizer.visitor(++visited_, energy, inverted);
       return !stopped_;
     };
-    const Result r = flatten_with_scaffold(chart, uv, measure_, stopped_ ? 0 : options_.iterations, options_.threads, visit);
+    Options optimizer = options_.optimizer;
+    optimizer.iterations = stopped_ ? 0 : optimizer.iterations;
+    optimizer.visitor = visit;
+    const Result r = flatten_with_scaffold(chart, uv, measure_, optimizer, options_.weighting);
     piece.embedded = is_boundary_embedded(chart, uv);
     const Distortion_statistics s = CGAL::compute_distortion(chart, uv, measure_, parameters::cell_distortion_map(value));
     piece.mean = s.mean_volume, piece.max = s.max, piece.inverted = s.inverted_cells, piece.iterations = r.iterations;

@@ -100,16 +100,17 @@ inline std::vector<std::array<std::uint32_t, 3>> scaffold_triangles(const std::v
 // Minimizes `measure` on `chart` (a Surface_mesh of genus 0, a disk or a disk with holes) from the
 // map `uv` (one-to-one), every vertex free: rounds of two of minimize()'s iterations on the chart
 // with its scaffold, the scaffold made anew from each round's map, until a round gains less than
-// 1e-4 of the energy, `iterations` are done or `visitor` (called after each iteration) returns false. The scaffold's triangles
+// the threshold of `optimizer` (relative), its iterations are done or its visitor returns false;
+// its other options (schedule, solvers, threads) are each round's. The scaffold's triangles
 // measure against their own shape when made, with a small weight (a hundredth of the chart's,
 // spread evenly), so that they only resist being flattened.
 template <class Mesh, class UVMap, class Measure>
-Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure, std::size_t iterations, int threads,
-                             const std::function<bool(std::size_t, double, std::size_t)>& visitor = {})
+Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure, const Options& optimizer,
+                             Cell_weighting weighting = Cell_weighting::AVERAGE_VOLUME)
 {
   const auto start = std::chrono::steady_clock::now();
   const CGAL::Constant_property_map<typename Mesh::Vertex_index, bool> constrained(false);
-  const auto np = parameters::number_of_threads(threads).vertex_is_constrained_map(constrained);
+  const auto np = parameters::number_of_threads(optimizer.threads).vertex_is_constrained_map(constrained);
   auto adapter = make_triangle_mesh_adapter(chart, uv, np);
   const Optimization_problem<2> base = make_problem(adapter, np);
   const std::size_t n = base.number_of_vertices(), chart_cells = base.map.number_of_cells();
@@ -121,15 +122,14 @@ Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure
   for(const auto& [e, k] : count)
     if(k == 1) border.push_back({e.first, e.second});
 
-  Options options;
-  options.iterations = (std::min)(iterations, std::size_t(2));
+  Options options = optimizer;
+  options.iterations = (std::min)(optimizer.iterations, std::size_t(2));
   options.harmonic_start = false;
-  options.threads = threads;
-  options.visitor = visitor;
+  options.global_injectivity = options.untangle_first = false;
   std::vector<Vector<2>> x = base.map.target;
   Result result;
   double previous = std::numeric_limits<double>::infinity();
-  for(std::size_t round = 0; result.iterations < iterations; ++round) {
+  for(std::size_t round = 0; result.iterations < optimizer.iterations; ++round) {
     Optimization_problem<2> p;
     p.map.cells = base.map.cells;
     p.map.inverse_rest = base.map.inverse_rest;
@@ -153,7 +153,7 @@ Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure
     p.omega.assign(n + 4, 1.);
     p.is_free.assign(n + 4, 1);
     std::fill(p.is_free.begin() + n, p.is_free.end(), 0);
-    p.finalize(Cell_weighting::AVERAGE_VOLUME);
+    p.finalize(weighting);
     double chart_weight = 0;
     for(std::size_t c = 0; c < chart_cells; ++c) chart_weight += p.cell_weight[c];
     const std::size_t scaffold_cells = p.map.number_of_cells() - chart_cells;
@@ -175,7 +175,7 @@ Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure
       result.stopped_by_visitor = true;
       break;
     }
-    if(!(previous - r.final_energy > 1e-4 * std::abs(r.final_energy))) {
+    if(!(previous - r.final_energy > optimizer.threshold * std::abs(r.final_energy))) {
       result.converged = true;
       break;
     }
