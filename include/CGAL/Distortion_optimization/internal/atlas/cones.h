@@ -101,18 +101,20 @@ std::vector<typename Mesh::Vertex_index> place_cones(const Mesh& m, const std::v
   const Eigen::VectorXd u0 = factorization.solve(rhs);
   Eigen::VectorXd u = u0;
   std::vector<int> source;          // the later cones' columns
+  std::vector<bool> is_source(size, false);
   std::vector<Eigen::VectorXd> green;
   while(cones.size() < max_cones) {
     Vertex largest = Mesh::null_vertex();
     double magnitude = 0;
     for(auto v : m.vertices()) {
       const int i = column[std::size_t(v)];
-      if(i >= 0 && std::find(source.begin(), source.end(), i) == source.end() && std::abs(u[i]) > magnitude)
+      if(i >= 0 && !is_source[i] && std::abs(u[i]) > magnitude)
         magnitude = std::abs(u[i]), largest = v;
     }
     if(largest == Mesh::null_vertex() || !(magnitude > max_log_scale || (needs_a_cut && cones.size() < 2))) break;
     cones.push_back(largest);
     source.push_back(column[std::size_t(largest)]);
+    is_source[source.back()] = true;
     green.push_back(factorization.solve(Eigen::VectorXd::Unit(size, source.back())));
     const std::size_t k = source.size();
     Eigen::MatrixXd G(k, k);

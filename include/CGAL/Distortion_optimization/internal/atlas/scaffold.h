@@ -14,6 +14,7 @@
 
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>
+#include <CGAL/Distortion_optimization/internal/boundary_guard.h>
 #include <CGAL/Distortion_optimization/internal/minimize.h>
 #include <CGAL/Distortion_optimization/internal/named_parameters.h>
 #include <CGAL/Distortion_optimization/internal/optimization_problem.h>
@@ -114,13 +115,10 @@ Result flatten_with_scaffold(const Mesh& chart, UVMap uv, const Measure& measure
   auto adapter = make_triangle_mesh_adapter(chart, uv, np);
   const Optimization_problem<2> base = make_problem(adapter, np);
   const std::size_t n = base.number_of_vertices(), chart_cells = base.map.number_of_cells();
-  // The border edges, each once and as its cell runs (counterclockwise about the chart).
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
-  for(const auto& c : base.map.cells)
-    for(int i = 0; i < 3; ++i) ++count[{(std::min)(c[i], c[(i + 1) % 3]), (std::max)(c[i], c[(i + 1) % 3])}];
-  std::vector<std::array<std::uint32_t, 2>> border;
-  for(const auto& [e, k] : count)
-    if(k == 1) border.push_back({e.first, e.second});
+  // The border edges, each once, as the boundary guard finds them (in the order of their sorted
+  // ends, each from its smaller end: the order the triangulation inserts them in).
+  std::vector<std::array<std::uint32_t, 2>> border = Boundary_guard<2>::boundary_faces(base.map.cells);
+  for(auto& e : border) std::sort(e.begin(), e.end());
 
   Options options = optimizer;
   options.iterations = (std::min)(optimizer.iterations, std::size_t(2));
