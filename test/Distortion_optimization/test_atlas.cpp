@@ -133,7 +133,7 @@ TEST(Atlas, AClosedSurfaceOfGenusZeroIsCutToItsCones)
   Mesh3 mesh = read("sphere.off");
   const Checked_atlas c = check_atlas(mesh);
   EXPECT_GE(c.result.cones, 2u);
-  EXPECT_EQ(c.result.charts, 1u);
+  EXPECT_LE(c.result.charts, 2u);   // one chart, split in two at most for packing
   EXPECT_GT(c.result.seam_length_fraction, 0);
 }
 
@@ -209,6 +209,7 @@ TEST(Atlas, ABranchedChartIsSplitForPackingItsMapUnchanged)
   EXPECT_EQ(one.charts, 1u);
   EXPECT_GT(split.result.charts, 1u);
   EXPECT_GT(split.result.packing_efficiency, one.packing_efficiency + 0.05);
+  EXPECT_GT(split.result.packing_efficiency, 0.58);   // the parts' limbs settle into each other's hollows
   EXPECT_GT(split.result.seam_length_fraction, one.seam_length_fraction);
   EXPECT_EQ(split.result.mean_distortion, one.mean_distortion);
   EXPECT_EQ(split.result.max_distortion, one.max_distortion);

@@ -259,36 +259,37 @@ private:
     double area = 0, uv_area = 0;
     for(const Piece& piece : pieces_) area += piece.area, uv_area += piece.uv_area;
     const double s = uv_area > 0 ? std::sqrt(area / uv_area) : 1;
-    std::vector<std::vector<Vector<2>>> charts;
-    std::vector<double> chart_area;
-    std::vector<std::vector<std::int64_t>> local;   // by piece: each chart vertex's index in its chart's list
+    std::vector<Chart_to_pack> charts;
+    std::vector<std::vector<std::int64_t>> local;   // by piece: each corner's index in its chart's UVs
     for(Piece& piece : pieces_) {
       const std::size_t first = charts.size();
       charts.resize(first + piece.parts);
-      chart_area.resize(first + piece.parts, 0);
       local.emplace_back(piece.corner.size() * 3, -1);
       std::vector<std::int64_t> at(piece.uv.size(), -1);
       std::vector<std::uint32_t> stamp(piece.uv.size(), std::uint32_t(-1));
       for(std::size_t f = 0; f < piece.corner.size(); ++f) {
         const std::uint32_t k = piece.part[f];
-        auto& chart = charts[first + k];
+        Chart_to_pack& chart = charts[first + k];
+        std::array<std::size_t, 3> triangle;
         for(int i = 0; i < 3; ++i) {
           const std::uint32_t v = piece.corner[f][i];
-          if(stamp[v] != k) stamp[v] = k, at[v] = std::int64_t(chart.size()), chart.push_back(s * piece.uv[v]);
+          if(stamp[v] != k) stamp[v] = k, at[v] = std::int64_t(chart.uv.size()), chart.uv.push_back(s * piece.uv[v]);
           local.back()[3 * f + i] = at[v];
+          triangle[i] = std::size_t(at[v]);
         }
+        chart.triangles.push_back(triangle);
         const Vector<2> a = piece.uv[piece.corner[f][1]] - piece.uv[piece.corner[f][0]];
         const Vector<2> b = piece.uv[piece.corner[f][2]] - piece.uv[piece.corner[f][0]];
-        chart_area[first + k] += 0.5 * s * s * (a[0] * b[1] - a[1] * b[0]);
+        chart.area += 0.5 * s * s * (a[0] * b[1] - a[1] * b[0]);
       }
     }
-    efficiency_ = pack_charts(charts, chart_area, options_.gutter);
+    efficiency_ = pack_charts(charts, options_.gutter);
     std::size_t first = 0;
     for(std::size_t n = 0; n < pieces_.size(); ++n) {
       Piece& piece = pieces_[n];
       piece.corner_uv.resize(piece.corner.size());
       for(std::size_t f = 0; f < piece.corner.size(); ++f)
-        for(int i = 0; i < 3; ++i) piece.corner_uv[f][i] = charts[first + piece.part[f]][std::size_t(local[n][3 * f + i])];
+        for(int i = 0; i < 3; ++i) piece.corner_uv[f][i] = charts[first + piece.part[f]].uv[std::size_t(local[n][3 * f + i])];
       first += piece.parts;
     }
   }
