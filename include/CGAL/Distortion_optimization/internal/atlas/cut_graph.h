@@ -35,9 +35,12 @@ double edge_length(const Mesh& m, typename Mesh::Edge_index e)
 
 // Dijkstra's shortest paths along the edges from the vertices `sources`: each vertex's distance,
 // and the halfedge by which its path arrives (null at the sources and where nothing reaches).
+// With `goal`, the search ends at the first vertex reached for which it holds, and returns it
+// (the null vertex if none is reached); the paths found so far are kept.
 template <class Mesh>
-void shortest_paths(const Mesh& m, const std::vector<typename Mesh::Vertex_index>& sources, std::vector<double>& distance,
-                    std::vector<typename Mesh::Halfedge_index>& arrival)
+typename Mesh::Vertex_index shortest_paths(const Mesh& m, const std::vector<typename Mesh::Vertex_index>& sources,
+                                           std::vector<double>& distance, std::vector<typename Mesh::Halfedge_index>& arrival,
+                                           const std::function<bool(typename Mesh::Vertex_index)>& goal = {})
 {
   using Entry = std::pair<double, std::uint32_t>;
   distance.assign(m.number_of_vertices(), std::numeric_limits<double>::infinity());
@@ -52,6 +55,7 @@ void shortest_paths(const Mesh& m, const std::vector<typename Mesh::Vertex_index
     queue.pop();
     const typename Mesh::Vertex_index v(i);
     if(d > distance[i] || m.halfedge(v) == Mesh::null_halfedge()) continue;
+    if(goal && goal(v)) return v;
     for(auto h : CGAL::halfedges_around_source(v, m)) {
       const std::size_t w = std::size_t(m.target(h));
       const double through = d + edge_length(m, m.edge(h));
@@ -62,6 +66,7 @@ void shortest_paths(const Mesh& m, const std::vector<typename Mesh::Vertex_index
       }
     }
   }
+  return Mesh::null_vertex();
 }
 
 // Whether each vertex lies on a seam or a border.
@@ -160,19 +165,19 @@ std::vector<bool> handle_seams(const Mesh& m)
 }
 
 // Adds to `seam` the shortest path from `cone` to the seams and borders (to `other` where there
-// are none: the first cut of a closed piece of genus 0).
+// are none: the first cut of a closed piece of genus 0). The search starts from the cone and ends
+// where it meets them: it explores only the ball the path's length spans.
 template <class Mesh>
 void add_seam_to(const Mesh& m, typename Mesh::Vertex_index cone, typename Mesh::Vertex_index other, std::vector<bool>& seam)
 {
   const std::vector<bool> on = vertices_on_cuts(m, seam);
-  std::vector<typename Mesh::Vertex_index> sources;
-  for(auto v : m.vertices())
-    if(on[std::size_t(v)]) sources.push_back(v);
-  if(sources.empty()) sources.push_back(other);
+  const bool none = std::find(on.begin(), on.end(), true) == on.end();
   std::vector<double> distance;
   std::vector<typename Mesh::Halfedge_index> arrival;
-  shortest_paths(m, sources, distance, arrival);
-  for(auto v = cone; arrival[std::size_t(v)] != Mesh::null_halfedge(); v = m.source(arrival[std::size_t(v)]))
+  auto v = shortest_paths(m, {cone}, distance, arrival,
+                          [&](typename Mesh::Vertex_index w) { return none ? w == other : bool(on[std::size_t(w)]); });
+  if(v == Mesh::null_vertex()) return;
+  for(; arrival[std::size_t(v)] != Mesh::null_halfedge(); v = m.source(arrival[std::size_t(v)]))
     seam[std::size_t(m.edge(arrival[std::size_t(v)]))] = true;
 }
 
