@@ -129,7 +129,7 @@ template <int block>
 class Sparse_cholesky
 {
 public:
-  static constexpr int default_cholmod_from = 65536;
+  static constexpr int default_cholmod_from = 32768;
 
   explicit Sparse_cholesky(int cholmod_from = default_cholmod_from,
                            Fill_reducing_order fill = Fill_reducing_order::NESTED_DISSECTION)
