@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The atlas path: a source with a closed piece or a handle, without --target, is cut into charts,
-// flattened and packed by compute_atlas(), and written as an OBJ with one UV per corner.
+// The atlas path: a surface source with a closed piece or a handle (or with holes or in pieces,
+// when no map per vertex is asked for; run_triangles decides), without --target, is cut into
+// charts, flattened and packed by compute_atlas(), and written as an OBJ with one UV per corner.
 
 #include "tool.h"
 

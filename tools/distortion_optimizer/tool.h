@@ -52,7 +52,8 @@ using Fields = std::vector<std::pair<std::string, std::string>>;
 // writes the outputs named in `c` and prints the report. Throw Invalid_input for bad input.
 int run_triangles(const Command_line& c);
 int run_tetrahedra(const Command_line& c);
-// The atlas of a source with a closed piece or a handle (atlas_maps.cpp), called by run_triangles.
+// The atlas of a surface source that has no one map to the plane, or whose map per vertex is not
+// asked for (atlas_maps.cpp), called by run_triangles.
 int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& mesh);
 
 // The source as a Surface_mesh, vertex i and face f in file order; rejects what a surface mesh

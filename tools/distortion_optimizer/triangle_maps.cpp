@@ -167,11 +167,16 @@ int run_triangles(const Command_line& c)
   } else {
     borders = borders_of_planar_domain(mesh, outer);
     // A closed piece or a handle, or seams given: no one map to the plane, but an atlas (cut,
-    // flattened, packed).
-    if(borders == 0 || !c.seams.empty()) return run_atlas(c, source, mesh);
+    // flattened, packed). A surface with holes or in pieces has one, but gets the atlas too where
+    // nothing asks for its one map (an OBJ output, none of the options only a map per vertex has):
+    // its charts free of any fixed border and packed into the unit square.
+    const bool one_map_asked = extension(c.output) != "obj" || !c.flat_output.empty() || (c.fix != "boundary" && c.fix != "none") ||
+                               c.subdivide > 0 || !c.vertex_weights.empty() || c.untangle || c.svg_both;
+    const bool disk = borders == 1;
+    if(borders == 0 || !c.seams.empty() || (!planar && !disk && !one_map_asked)) return run_atlas(c, source, mesh);
     if(c.max_distortion > 0)
-      throw DO::Invalid_input(c.source + ": --max-distortion bounds the charts of an atlas, and this source needs none (every "
-                              "piece a disk or a disk with holes)");
+      throw DO::Invalid_input(c.source + ": --max-distortion bounds the charts of an atlas, and this source gets none (" +
+                              (planar ? "a planar source" : disk ? "a disk" : "its map per vertex is asked for") + ")");
     DO::initial_parameterization(mesh, uv);
     // The tool's own start has the source's orientation: the Tutte map is counter-clockwise, so a
     // planar source listed clockwise gets its mirror image. (A surface is compared in each face's

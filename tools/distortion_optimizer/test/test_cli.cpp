@@ -340,19 +340,17 @@ TEST(CommandLine, TutteStartForSeveralPieces)
 // A closed surface of genus 2 (CGAL's eight.off) without --target: an atlas, written as OBJ with
 // the source's vertices in order, one vt per UV corner and the source's faces; every UV triangle
 // counterclockwise (exact) and in the unit square; the report's atlas fields.
-TEST(CommandLine, AnAtlasForAClosedSurface)
+namespace {
+
+// An atlas as the tool writes it: the source's vertices and faces in order, a UV per corner, each
+// in the unit square and each UV triangle counterclockwise (exact).
+void expect_atlas_obj(const std::string& o, const IO::Triangle_soup& source)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const IO::Triangle_soup source = IO::read_triangle_soup(data("eight.off"));
-  const std::string o = temp("eight_atlas.obj"), r = temp("eight_atlas.json");
-  const Tool_run result = run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --report " + r +
-                              " --svg " + temp("eight_atlas.svg"));
-  ASSERT_EQ(result.status, 0) << result.output;
   const IO::Triangle_soup atlas = IO::read_triangle_soup(o);
   EXPECT_EQ(atlas.points, source.points);
   EXPECT_EQ(atlas.cells, source.cells);
   ASSERT_EQ(atlas.cell_texture_indices.size(), source.cells.size());
-  EXPECT_GT(atlas.texture_coordinates.size(), source.points.size());   // the seams' vertices have two UVs or more
   for(const auto& t : atlas.cell_texture_indices) {
     std::array<K::Point_2, 3> p;
     for(int i = 0; i < 3; ++i) {
@@ -362,6 +360,41 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
     }
     EXPECT_EQ(CGAL::orientation(p[0], p[1], p[2]), CGAL::LEFT_TURN);
   }
+}
+
+} // namespace
+
+// A surface with holes (CGAL's holes.off, 7 borders) written as OBJ gets an atlas (its charts
+// free of any fixed border, packed into the unit square); written as OFF, or with --flat-output,
+// the map per vertex of the previous tests (no atlas fields in the report).
+TEST(CommandLine, ASurfaceWithHolesWrittenAsOBJGetsAnAtlas)
+{
+  const IO::Triangle_soup source = IO::read_triangle_soup(data("holes.off"));
+  const std::string o = temp("holes_atlas.obj"), r = temp("holes_atlas.json");
+  const Tool_run result = run("--source " + data("holes.off") + " --output " + o + " --measure symmetric_dirichlet --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  expect_atlas_obj(o, source);
+  const std::string report = slurp(r);
+  EXPECT_GE(json_value(report, "charts"), 1);
+  EXPECT_EQ(json_value(report, "inverted_cells"), 0);
+  EXPECT_EQ(json_value(report, "overlapping_charts"), 0);
+  EXPECT_GT(json_value(report, "packing_efficiency"), 0.5);
+  EXPECT_LT(json_value(report, "final_energy"), 1.05);
+  for(const std::string& other : {" --output " + temp("holes_map.off"), " --output " + o + " --flat-output " + temp("holes_flat2.off")}) {
+    ASSERT_EQ(run("--source " + data("holes.off") + other + " --measure symmetric_dirichlet --report " + r).status, 0) << other;
+    EXPECT_EQ(slurp(r).find("\"charts\""), std::string::npos) << other;
+  }
+}
+
+TEST(CommandLine, AnAtlasForAClosedSurface)
+{
+  const IO::Triangle_soup source = IO::read_triangle_soup(data("eight.off"));
+  const std::string o = temp("eight_atlas.obj"), r = temp("eight_atlas.json");
+  const Tool_run result = run("--source " + data("eight.off") + " --output " + o + " --measure symmetric_dirichlet --report " + r +
+                              " --svg " + temp("eight_atlas.svg"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  expect_atlas_obj(o, source);
+  EXPECT_GT(IO::read_triangle_soup(o).texture_coordinates.size(), source.points.size());   // the seams' vertices have two UVs or more
   const std::string report = slurp(r);
   EXPECT_EQ(json_value(report, "charts"), 1);
   EXPECT_EQ(json_value(report, "inverted_cells"), 0);
@@ -398,7 +431,7 @@ TEST(CommandLine, AnAtlasForAClosedSurface)
   std::ofstream(temp("flat_tetrahedron.off")) << "OFF\n4 4 0\n0 0 0\n1 0 0\n2 0 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
   expect_failed_cleanly(run("--source " + temp("flat_tetrahedron.off") + " --output " + none),
                         "flat_tetrahedron.off: face 0 is degenerate (its corners are collinear)", none);
-  expect_failed_cleanly(run("--source " + data("nefertiti.off") + " --output " + none + " --max-distortion 1.1"), "needs none", none);
+  expect_failed_cleanly(run("--source " + data("nefertiti.off") + " --output " + none + " --max-distortion 1.1"), "gets none (a disk)", none);
   const Tool_run usage = run("--source " + data("eight.off") + " --output " + none + " --max-distortion 0.5");
   EXPECT_EQ(usage.status, 2);
   EXPECT_NE(usage.output.find("--max-distortion must be a number >= 1"), std::string::npos) << usage.output;
