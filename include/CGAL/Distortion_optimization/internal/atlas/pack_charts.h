@@ -121,12 +121,13 @@ inline void column_profile(const std::vector<std::array<Vector<2>, 2>>& segments
 // frame, is dropped like a Tetris piece onto the horizon of those before it, where it raises the
 // packing least and then wastes least space below it (Levy, Petitjean, Ray and Maillot, "Least
 // squares conformal maps for automatic texture atlas generation", 2002). The strip's width is
-// chosen among nine near the square the charts' rectangles would fill. Returns the charts' UV area
-// over that of the rectangle bounding them all.
+// the one, of those tried, whose layout fills the square about it best (the unit square's share
+// the charts take: their texel density). Returns the charts' UV area over that of the rectangle
+// bounding them all.
 inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
 {
   const std::size_t n = charts.size(), columns = 256;
-  double rectangles = 0, narrowest = 0, area = 0;
+  double rectangles = 0, narrowest = 0, longest = 0, area = 0;
   std::vector<std::array<double, 2>> size(n);
   for(std::size_t k = 0; k < n; ++k) {
     turn_to_least_bounding_rectangle(charts[k].uv);
@@ -136,6 +137,7 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
     size[k] = {u1 - u0, v1 - v0};
     rectangles += size[k][0] * size[k][1];
     narrowest = (std::max)(narrowest, size[k][1]);   // the strip must take every chart some way
+    longest = (std::max)(longest, size[k][0]);
     area += charts[k].area;
   }
   std::vector<std::size_t> order(n);
@@ -191,13 +193,15 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
     const double gap = gutter * side;
     double best = -1;
     std::vector<Placement> at(n);
-    for(int i = 0; i <= 8; ++i) {
-      const double strip = (std::max)(narrowest * (1 + 1e-9) + gap, std::sqrt(rectangles) * (0.8 + 0.1 * i));
+    for(int i = 0; i <= 12; ++i) {
+      // Near the square the rectangles would fill, or near the longest chart's length (which a
+      // narrower strip would stand on end).
+      const double strip = (std::max)(narrowest * (1 + 1e-9) + gap, i <= 8 ? std::sqrt(rectangles) * (0.8 + 0.1 * i)
+                                                                             : longest * (1 + 0.1 * (i - 9)) + gap);
       double eu = 0, ev = 0;
       drop(strip, gap, at, eu, ev);
-      const double fill = area / (eu * ev);
-      if((best < 0 || (std::max)(eu, ev) <= 2 * (std::min)(eu, ev)) && fill > best)
-        best = fill, placed = at, extent_u = eu, extent_v = ev, strip_used = strip;
+      const double square = area / ((std::max)(eu, ev) * (std::max)(eu, ev));
+      if(square > best) best = square, placed = at, extent_u = eu, extent_v = ev, strip_used = strip;
     }
     side = (std::max)(extent_u, extent_v) / (1 - 2 * gutter);
   }
