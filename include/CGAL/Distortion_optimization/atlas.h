@@ -36,7 +36,7 @@ namespace Distortion_optimization {
 /// What `compute_atlas()` returns.
 struct Atlas_result
 {
-  std::size_t charts = 0;             ///< charts (a connected piece of the surface, or a part of one split for packing)
+  std::size_t charts = 0;             ///< charts (a connected piece of the surface, or a part of one: a region cut under `max_distortion`, or split for packing)
   std::size_t cones = 0;              ///< cone vertices the seams were drawn to
   double seam_length_fraction = 0;    ///< the seams' length over the length of all edges
   double packing_efficiency = 0;      ///< the charts' UV area over that of the rectangle bounding them all
@@ -106,7 +106,7 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{atlas_gutter} \cgalParamDescription{space between charts and about them, a fraction of the square's side, in [0, 0.25)} \cgalParamDefault{0.01} \cgalParamNEnd
   \cgalParamNBegin{min_chart_fill} \cgalParamDescription{a chart filling less of its least bounding rectangle is split for packing, in [0, 1)} \cgalParamDefault{0.6} \cgalParamNEnd
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
-  \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each chart's mean distortion: above it the chart gets more seams} \cgalParamDefault{none} \cgalParamNEnd
+  \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each piece's mean distortion (area-weighted): a piece above it is cut into 2, 4, 8, ... charts of nearly constant normal (CGAL's variational shape approximation) and flattened again until it holds (or its charts would have fewer than 16 faces)} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the most iterations of each chart's optimization} \cgalParamDefault{100} \cgalParamNEnd
   \cgalParamNBegin{convergence_threshold, schedule, local_solver, global_solver, cell_weighting, vertex_order, parallel_sweep} \cgalParamDescription{each chart's optimization's, as for `CGAL::minimize_distortion()` (the scaffold is remade every two iterations; the threshold is the relative gain under which the rounds stop)} \cgalParamDefault{theirs} \cgalParamNEnd
   \cgalParamNBegin{visitor} \cgalParamDescription{called as `visitor(iteration, energy)` or `visitor(iteration, energy, inverted)` after each iteration of the charts' optimizations, numbered across them; `false` stops them, and the charts not yet flattened keep their Tutte start} \cgalParamDefault{none} \cgalParamNEnd

@@ -25,6 +25,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Surface_mesh_approximation/approximate_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
@@ -42,7 +43,7 @@ namespace internal {
 struct Atlas_options
 {
   double max_log_scale = 1;           // the cones' bound on the conformal flattening's log scale
-  double max_distortion = 0;          // a chart's mean distortion above it cuts further (0: no bound)
+  double max_distortion = 0;          // a piece's mean distortion above it cuts it into charts (0: no bound)
   double gutter = 0.01;               // between charts, a fraction of the square's side
   double min_fill = 0.6;              // a chart filling less of its bounding rectangle is split
   std::vector<std::array<std::uint32_t, 2>> seams;   // the user's, as vertex pairs of edges
@@ -90,8 +91,13 @@ public:
       add_cone_seams(piece, options_.max_log_scale);
       cut_open(piece);
       flatten(piece);
-      for(int more = 0; more < 8 && options_.max_distortion > 0 && piece.mean > options_.max_distortion; ++more) {
-        add_seam_to_most_distorted(piece);
+      // Above the distortion bound: the piece in 2, 4, 8, ... regions, each a chart (16 faces at
+      // least per region), until it holds.
+      const std::vector<bool> seam = piece.seam;
+      for(std::size_t regions = 2; options_.max_distortion > 0 && piece.mean > options_.max_distortion &&
+                                   16 * regions <= piece.mesh.number_of_faces() && regions <= 512; regions *= 2) {
+        piece.seam = seam;
+        add_region_seams(piece, regions);
         cut_open(piece);
         flatten(piece);
       }
@@ -180,28 +186,18 @@ private:
     piece.cones += cones.size();
   }
 
-  // A seam from the vertex whose faces the flattening distorts most (their mean, by area) to the
-  // seams there are: where a chart stays above the distortion bound, it opens further there.
-  void add_seam_to_most_distorted(Piece& piece)
+  // Seams between `regions` regions of nearly constant normal (at most; CGAL's variational shape
+  // approximation under the L^{2,1} metric: Cohen-Steiner, Alliez and Desbrun, "Variational shape
+  // approximation", 2004): where a piece flattens with too much distortion, its charts become
+  // such regions, each nearly flat, which flatten with little.
+  void add_region_seams(Piece& piece, std::size_t regions)
   {
-    std::vector<double> sum(piece.mesh.number_of_vertices(), 0), area(piece.mesh.number_of_vertices(), 0);
-    for(auto f : piece.mesh.faces()) {
-      const auto h = piece.mesh.halfedge(f);
-      const double a = std::sqrt(CGAL::to_double(CGAL::squared_area(piece.mesh.point(piece.mesh.source(h)),
-                                                                     piece.mesh.point(piece.mesh.target(h)),
-                                                                     piece.mesh.point(piece.mesh.target(piece.mesh.next(h))))));
-      for(auto v : CGAL::vertices_around_face(h, piece.mesh)) {
-        sum[std::size_t(v)] += a * piece.value[std::size_t(f)];
-        area[std::size_t(v)] += a;
-      }
-    }
-    const std::vector<bool> on = vertices_on_cuts(piece.mesh, piece.seam);
-    Vertex worst = Mesh::null_vertex();
-    double largest = 0;
-    for(auto v : piece.mesh.vertices())
-      if(!on[std::size_t(v)] && area[std::size_t(v)] > 0 && sum[std::size_t(v)] / area[std::size_t(v)] > largest)
-        largest = sum[std::size_t(v)] / area[std::size_t(v)], worst = v;
-    if(worst != Mesh::null_vertex()) add_seam_to(piece.mesh, worst, worst, piece.seam);
+    Mesh& m = piece.mesh;
+    auto region = m.add_property_map<Mesh::Face_index, std::size_t>("f:region", 0).first;
+    CGAL::Surface_mesh_approximation::approximate_triangle_mesh(m, CGAL::parameters::max_number_of_proxies(regions).face_proxy_map(region));
+    for(auto e : m.edges())
+      if(!m.is_border(e) && region[m.face(m.halfedge(e))] != region[m.face(m.opposite(m.halfedge(e)))]) piece.seam[std::size_t(e)] = true;
+    m.remove_property_map(region);
   }
 
   void cut_open(Piece& piece) { piece.chart = cut_along(piece.mesh, piece.seam, piece.corner); }
