@@ -144,14 +144,16 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return size[a][0] * size[a][1] > size[b][0] * size[b][1]; });
 
-  // Each chart's outline in its four turns (about its rectangle's centre, back to u, v >= 0).
-  std::vector<std::vector<std::array<Vector<2>, 2>>> outlines(n);
-  for(std::size_t k = 0; k < n; ++k) outlines[k] = outline(charts[k]);
+  // Each chart's outline in its four turns (about its rectangle's centre, back to u, v >= 0),
+  // turned once for all the strips tried.
   const auto turned = [&](std::size_t k, int turn, const Vector<2>& p) {
     const double w = size[k][0], h = size[k][1], u = p[0], v = p[1];
     return turn == 0 ? p : turn == 1 ? Vector<2>(h - v, u) : turn == 2 ? Vector<2>(w - u, h - v) : Vector<2>(v, w - u);
   };
-  std::vector<std::array<Vector<2>, 2>> segments;
+  std::vector<std::array<std::vector<std::array<Vector<2>, 2>>, 4>> outlines(n);
+  for(std::size_t k = 0; k < n; ++k)
+    for(const auto& [p, q] : outline(charts[k]))
+      for(int turn = 0; turn < 4; ++turn) outlines[k][turn].push_back({turned(k, turn, p), turned(k, turn, q)});
   struct Placement { int turn = 0; std::size_t column = 0; double v = 0; };
   std::vector<Placement> placed(n);
   // One packing in a strip `strip` wide: the charts' places and the extents of their union.
@@ -164,9 +166,7 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
       double best = std::numeric_limits<double>::infinity();
       std::vector<double> best_top;
       for(int turn = 0; turn < 4; ++turn) {
-        segments.clear();
-        for(const auto& [p, q] : outlines[k]) segments.push_back({turned(k, turn, p), turned(k, turn, q)});
-        column_profile(segments, size[k][turn % 2], d, bottom, top);
+        column_profile(outlines[k][turn], size[k][turn % 2], d, bottom, top);
         if(bottom.size() > columns) continue;
         for(std::size_t x = 0; x + bottom.size() <= columns; ++x) {
           double v = 0, waste = 0;
