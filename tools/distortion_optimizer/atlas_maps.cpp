@@ -23,21 +23,25 @@
 
 namespace distortion_optimizer {
 
+std::string option_of_one_map(const Command_line& c)
+{
+  if(c.fix != "boundary" && c.fix != "none") return "--fix FILE";
+  if(c.subdivide > 0) return "--subdivide";
+  if(!c.vertex_weights.empty()) return "--vertex-weights";
+  if(!c.flat_output.empty()) return "--flat-output";
+  if(c.untangle) return "--untangle (the charts' starts are never tangled)";
+  if(c.svg_both) return "--svg-both (the atlas is drawn alone)";
+  return "";
+}
+
 int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& mesh)
 {
   const std::string why = c.seams.empty() ? printable(c.source) + " has a closed piece or a handle, so its map to the plane is an atlas with seams"
                                           : "with --seams the map is an atlas";
   if(extension(c.output) != "obj")
     throw DO::Invalid_input(why + ", whose UVs are per corner: give an .obj output (--output X.obj)");
-  const auto refuse_with = [&](bool given, const std::string& option) {
-    if(given) throw DO::Invalid_input(why + ": " + option + " does not apply to it");
-  };
-  refuse_with(c.fix != "boundary" && c.fix != "none", "--fix FILE");
-  refuse_with(c.subdivide > 0, "--subdivide");
-  refuse_with(!c.vertex_weights.empty(), "--vertex-weights");
-  refuse_with(!c.flat_output.empty(), "--flat-output");
-  refuse_with(c.untangle, "--untangle (the charts' starts are never tangled)");
-  refuse_with(c.svg_both, "--svg-both (the atlas is drawn alone)");
+  if(const std::string option = option_of_one_map(c); !option.empty())
+    throw DO::Invalid_input(why + ": " + option + " does not apply to it");
 
   auto seam = mesh.add_property_map<Mesh::Edge_index, bool>("e:atlas_seam", false).first;
   if(!c.seams.empty()) {

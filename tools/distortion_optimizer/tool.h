@@ -52,6 +52,10 @@ using Fields = std::vector<std::pair<std::string, std::string>>;
 // writes the outputs named in `c` and prints the report. Throw Invalid_input for bad input.
 int run_triangles(const Command_line& c);
 int run_tetrahedra(const Command_line& c);
+// The first option given that only a map per vertex has (--fix FILE, --subdivide, ...), as the
+// atlas's refusal names it; empty if none: run_triangles then gives an atlas to a surface with holes
+// or in pieces.
+std::string option_of_one_map(const Command_line& c);
 // The atlas of a surface source that has no one map to the plane, or whose map per vertex is not
 // asked for (atlas_maps.cpp), called by run_triangles.
 int run_atlas(const Command_line& c, const DO::IO::Triangle_soup& source, Mesh& mesh);

@@ -170,8 +170,7 @@ int run_triangles(const Command_line& c)
     // flattened, packed). A surface with holes or in pieces has one, but gets the atlas too where
     // nothing asks for its one map (an OBJ output, none of the options only a map per vertex has):
     // its charts free of any fixed border and packed into the unit square.
-    const bool one_map_asked = extension(c.output) != "obj" || !c.flat_output.empty() || (c.fix != "boundary" && c.fix != "none") ||
-                               c.subdivide > 0 || !c.vertex_weights.empty() || c.untangle || c.svg_both;
+    const bool one_map_asked = extension(c.output) != "obj" || !option_of_one_map(c).empty();
     const bool disk = borders == 1;
     if(borders == 0 || !c.seams.empty() || (!planar && !disk && !one_map_asked)) return run_atlas(c, source, mesh);
     if(c.max_distortion > 0)

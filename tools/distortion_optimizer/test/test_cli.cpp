@@ -337,9 +337,6 @@ TEST(CommandLine, TutteStartForSeveralPieces)
   }
 }
 
-// A closed surface of genus 2 (CGAL's eight.off) without --target: an atlas, written as OBJ with
-// the source's vertices in order, one vt per UV corner and the source's faces; every UV triangle
-// counterclockwise (exact) and in the unit square; the report's atlas fields.
 namespace {
 
 // An atlas as the tool writes it: the source's vertices and faces in order, a UV per corner, each
@@ -387,6 +384,9 @@ TEST(CommandLine, ASurfaceWithHolesWrittenAsOBJGetsAnAtlas)
   }
 }
 
+// A closed surface of genus 2 (CGAL's eight.off) without --target: an atlas, written as OBJ with
+// the source's vertices in order, one vt per UV corner and the source's faces; every UV triangle
+// counterclockwise (exact) and in the unit square; the report's atlas fields.
 TEST(CommandLine, AnAtlasForAClosedSurface)
 {
   const IO::Triangle_soup source = IO::read_triangle_soup(data("eight.off"));
