@@ -167,7 +167,7 @@ std::string usage()
   "  --seams      a file of edges to cut an atlas along, one per line as two 0-based vertex\n"
   "               indices: any source then gets an atlas; more seams are added where needed\n"
   "  --max-distortion  an atlas's bound on each piece's mean distortion: a piece above it is cut\n"
-  "               into 2, 4, 8, ... charts of nearly constant normal until it holds\n"
+  "               into 2, 3, 4, 6, 9, ... charts of nearly constant normal until it holds\n"
   "  --time-limit stop after the first iteration that ends SECONDS or more after the optimization\n"
   "               started, and write that map (the report says stopped_by_time_limit); a limit\n"
   "               reached while untangling, cells still inverted, fails (status 1); in the volume\n"

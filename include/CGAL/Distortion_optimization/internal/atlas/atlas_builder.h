@@ -91,11 +91,11 @@ public:
       add_cone_seams(piece, options_.max_log_scale);
       cut_open(piece);
       flatten(piece);
-      // Above the distortion bound: the piece in 2, 4, 8, ... regions, each a chart (16 faces at
-      // least per region), until it holds.
+      // Above the distortion bound: the piece in 2, 3, 4, 6, 9, ... regions (half again each time:
+      // doubling overshoots the charts a bound needs), each a chart of 16 faces at least, until it holds.
       const std::vector<bool> seam = piece.seam;
       for(std::size_t regions = 2; options_.max_distortion > 0 && piece.mean > options_.max_distortion &&
-                                   16 * regions <= piece.mesh.number_of_faces() && regions <= 512; regions *= 2) {
+                                   16 * regions <= piece.mesh.number_of_faces() && regions <= 512; regions = regions * 3 / 2) {
         piece.seam = seam;
         add_region_seams(piece, regions);
         cut_open(piece);
