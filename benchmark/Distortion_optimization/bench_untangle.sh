@@ -6,7 +6,9 @@
 # triangles). Anchored vertices (the *_anchors.txt files) are fixed; the planar and UV cases have a
 # free boundary: the elephants' boundaries cross (the tool then warns and runs without the guard),
 # the octopus UV's does not (the guard keeps it so; the guarded rounds leave ears inverted and the
-# untangler starts again from Tutte's embedding).
+# untangler starts again from Tutte's embedding). Then CGAL's ARAP parameterizations of lion-head
+# and mannequin-devil (border free, made by the untangle_parameterization example; 330 and 2,673
+# triangles flipped), untangled with the border fixed and free.
 #
 #   bash benchmark/Distortion_optimization/bench_untangle.sh [data_dir [threads]]
 #   (default data dir: ../shared/data/abcd beside the repository; run after scripts/test.sh)
@@ -15,19 +17,19 @@ DATA=${1:-$ROOT/../shared/data/abcd}
 THREADS=${2:-1}
 [ -d "$DATA" ] || { echo "no data folder $DATA" >&2; exit 1; }
 
-printf '%-22s %7s %9s %9s %8s %10s %10s %8s %12s\n' case cells "inv start" "inv end" rounds "untangle s" "optimize s" sweeps "final E"
+printf '%-31s %7s %9s %9s %8s %10s %10s %8s %12s\n' case cells "inv start" "inv end" rounds "untangle s" "optimize s" sweeps "final E"
 run() {
   local name=$1; shift
   local report=$OUT/$name.json
   if "$TOOL" "$@" --untangle --threads "$THREADS" --report "$report" > "$OUT/$name.log" 2>&1; then
     local seconds untangle
     seconds=$(field "$report" seconds); untangle=$(field "$report" untangle_seconds)
-    printf '%-22s %7s %9s %9s %8s %10.3f %10.3f %8s %12.6g\n' "$name" "$(field "$report" cells)" \
+    printf '%-31s %7s %9s %9s %8s %10.3f %10.3f %8s %12.6g\n' "$name" "$(field "$report" cells)" \
       "$(field "$report" inverted_start_cells)" "$(field "$report" inverted_cells)" "$(field "$report" untangle_iterations)" \
       "$untangle" "$(awk -v a="$seconds" -v b="$untangle" 'BEGIN { print a - b }')" "$(field "$report" sweeps)" \
       "$(field "$report" final_energy)"
   else
-    printf '%-22s failed: %s\n' "$name" "$(tail -1 "$OUT/$name.log")"
+    printf '%-31s failed: %s\n' "$name" "$(tail -1 "$OUT/$name.log")"
   fi
 }
 
@@ -43,3 +45,11 @@ for size in 2K 30K; do
 done
 run octopus_6K_uv --source "$DATA/octopus_6K_surface.obj" --target "$DATA/octopus_6K_initial_uv.obj" \
   --fix none --measure symmetric_dirichlet --output "$OUT/octopus.obj"
+EXAMPLE=$ROOT/build/examples/Distortion_optimization/untangle_parameterization
+for disk in lion-head mannequin-devil; do
+  (cd "$OUT" && "$EXAMPLE" "$ROOT/build/data/$disk.off" "$disk" symmetric_dirichlet > /dev/null)
+  for fix in boundary none; do
+    run "${disk}_arap_$fix" --source "$OUT/${disk}_arap.obj" --target "$OUT/${disk}_arap.obj" --fix "$fix" \
+      --measure symmetric_dirichlet --output "$OUT/$disk.obj"
+  done
+done

@@ -73,8 +73,8 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(min_chart_fill_t, min_chart_fil
 /// Cones are placed until the conformal flattening's log scale factor is at most this everywhere
 /// (`compute_atlas()`); default 1: smaller values give more cones and longer seams.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(cone_log_scale_t, cone_log_scale)
-/// A bound on each chart's mean distortion (`compute_atlas()`): a chart above it gets a seam from its
-/// most distorted vertex and is flattened again, up to eight times; default none.
+/// A bound on each piece's mean distortion (`compute_atlas()`): a piece above it is cut into more
+/// charts of nearly constant normal until it holds; default none.
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(max_distortion_t, max_distortion)
 } // namespace parameters
 

@@ -402,17 +402,18 @@ inline Options recording_rounds(const Options& options, std::size_t& rounds)
   return o;
 }
 
-// Untangles problem.map in place without the boundary guard, as untangle_everywhere(). A few
-// inverted cells in a large map (the tangles of a deformation, the flat cells a ball map leaves
-// along the sharp edges of a domain) are first untangled in a part of the map the size of the
-// tangle: their own vertices free (ring 0), then within 1, 2, 4, ..., 32 rings of those still
-// inverted (a part gives up after three rounds without its count falling a tenth below its low);
-// the whole map only if cells remain inverted. Ring 0 suits scattered cells, such as the flat
-// cells along the edges of a ball map, whose one ring can be half the map. A tangle that needs
-// room around it stalls there against the fixed vertices, squeezing its neighbours: ring 1 then
-// starts again from the start map, which takes fewer rounds than from ring 0's best; wider rings
-// start from the best map of the last. A part's untangled map is less even than the whole's, so
-// the optimization after it can take more iterations.
+// Untangles problem.map in place without the boundary guard, as untangle_everywhere(). The
+// inverted cells, however many (the tangles of a deformation or of a parameterizer, the flat cells
+// a ball map leaves along the sharp edges of a domain), are first untangled in a part of the map
+// the size of the tangles: their own vertices free (ring 0), then within 1, 2, 4, ..., 32 rings of
+// those still inverted (a part gives up after three rounds without its count falling a tenth below
+// its low; none is tried that holds half the map's cells); the whole map only if cells remain
+// inverted. Ring 0 suits scattered cells, such as the flat cells along the edges of a ball map,
+// whose one ring can be half the map. A tangle that needs room around it stalls there against the
+// fixed vertices, squeezing its neighbours: ring 1 then starts again from the start map, which
+// takes fewer rounds than from ring 0's best; wider rings start from the best map of the last. A
+// part's untangled map is less even than the whole's, so the optimization after it can take more
+// iterations.
 template <int n, class GeomTraits>
 Untangle_result untangle_in_parts(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
@@ -430,7 +431,7 @@ Untangle_result untangle_in_parts(Optimization_problem<n>& problem, const GeomTr
   std::vector<unsigned char> region;
   Untangle_result report;
   report.inverted_before = report.inverted_after = inverted_vertices(region);
-  if(report.inverted_before == 0 || 20 * report.inverted_before > problem.map.number_of_cells())
+  if(report.inverted_before == 0)
     return untangle_everywhere(problem, traits, options);
   check_tangled_cells_can_move(problem, traits);   // before the parts, which number cells their own way
   const std::vector<Vector<n>> start_targets = problem.map.target;
