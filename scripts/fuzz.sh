@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the OFF, OBJ, Medit and TetGen readers, the PLY, STL and GOCAD paths (the package's checks
-# of the bytes, then CGAL's readers), the vertex-list and vertex-weight readers (the
-# tool's --fix and --vertex-weights files) and the tool's command-line parser with libFuzzer
+# of the bytes, then CGAL's readers), the vertex-list, vertex-weight and vertex-pair readers (the
+# tool's --fix, --vertex-weights and --seams files) and the tool's command-line parser with libFuzzer
 # (clang), AddressSanitizer and UBSan.
 #   bash scripts/fuzz.sh [seconds per target, default 600] [target ...]
 # Seeds: the real meshes extracted by the build (build/data) and small hand-written files.
@@ -67,7 +67,8 @@ for reader in "${targets[@]}"; do
       printf 'GOCAD TSurf 1\nHEADER {\nname: t\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n' > "$dir/corpus/triangle.ts" ;;
     read_vertex_list)
       printf '# pinned\n0\n12\n\n999\n' > "$dir/corpus/list.txt"
-      printf '\xef\xbb\xbf3 # bom\n-1\n1000\n7 8\n' > "$dir/corpus/bad.txt" ;;
+      printf '\xef\xbb\xbf3 # bom\n-1\n1000\n7 8\n' > "$dir/corpus/bad.txt"
+      printf '# seams\n0 1\n8 7\n\n998 999 # last\n' > "$dir/corpus/seams.txt" ;;
     command_line)
       printf -- '--source\0s.off\0--target\0t.off\0--output\0o.off\0--measure\0conformal*isometric\0--threads\0-5' > "$dir/corpus/args"
       printf -- '--source\0a.mesh\0--output\0./a.mesh\0--report\0r.json\0--untangle\0--fix\0none\0--iterations\0-1' > "$dir/corpus/args2" ;;
