@@ -504,12 +504,21 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   expect_invalid([&] {
     DO::mesh_interior(good, DOP::maximum_number_of_vertices(std::size_t(100), DOP::cell_size(1., DOP::facet_distance(1e-2))));
   }, "stopped at 100 vertices");
-  // A volume thinner than the facet distance (a sphere squashed to 1e-9, whose rim's protection
-  // once grew without bound) is refused; sizes below its thickness ask for too many vertices.
-  Surface flat = icosahedron(1);
-  for(auto v : flat.vertices()) flat.point(v) = Point(flat.point(v).x(), flat.point(v).y(), 1e-9 * flat.point(v).z());
-  expect_invalid([&] { DO::mesh_interior(flat); }, "the volume is thinner (2 volume / area = 1");
-  expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9)); }, "more than 2 million");
+  // A sphere squashed to a disc (1e-9 or 0.02 thick) has a knife-edged rim, whose protection ran
+  // for minutes at every size that passed the thickness check: refused at once, whatever the
+  // size; without protection (sharp_edge_angle 180), by its thickness, and sizes below that ask
+  // for too many vertices.
+  for(const double squash : {1e-9, 0.01}) {
+    Surface flat = icosahedron(1);
+    for(auto v : flat.vertices()) flat.point(v) = Point(flat.point(v).x(), flat.point(v).y(), squash * flat.point(v).z());
+    const std::string knife = "the volume is a slab whose rim is a knife edge (its faces meet there with normals 1";
+    expect_invalid([&] { DO::mesh_interior(flat); }, knife);
+    for(const double size : {0.026, 0.005}) expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(size)); }, knife);
+    if(squash < 1e-3) {
+      expect_invalid([&] { DO::mesh_interior(flat, DOP::sharp_edge_angle(180.)); }, "the volume is thinner (2 volume / area = 1");
+      expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9, DOP::sharp_edge_angle(180.))); }, "more than 2 million");
+    }
+  }
   // A plate 0.02 thick: at the default sizes (facet size 0.058) Mesh_3's tetrahedra would touch
   // across it (after a long refinement, for thinner plates); it is refused at once, and meshed
   // below twice its thickness, as the message says.
@@ -571,10 +580,13 @@ TEST(VolumeWorkflow, EveryComponentIsMeshed)
   }
   // A component thinner than the facet distance is refused, as a thin surface alone is: a flat
   // tetrahedron beside the sphere once got no tetrahedron, and a sphere of radius 1e-12 or a thin
-  // plate beside it kept Mesh_3 going without end.
+  // plate beside it kept Mesh_3 going without end. The flat tetrahedron's edges are knives: at
+  // any size; unprotected, by its thickness.
   Surface flat = big;
   CGAL::make_tetrahedron(Point(2, 0, 0), Point(2.5, 0, 0), Point(2, 0.5, 0), Point(2.1, 0.1, 0.01), flat);
-  expect_invalid([&] { DO::mesh_interior(flat); }, "the component of the surface with face 320 is thinner (2 volume / area = 0.00");
+  expect_invalid([&] { DO::mesh_interior(flat); }, "the component of the surface with face 320 is a slab whose rim is a knife edge");
+  expect_invalid([&] { DO::mesh_interior(flat, DOP::sharp_edge_angle(180.)); },
+                 "the component of the surface with face 320 is thinner (2 volume / area = 0.00");
   Surface speck = big;
   CGAL::copy_face_graph(placed(sphere, 2e-12, {2, 0, 0}), speck);
   expect_invalid([&] { DO::mesh_interior(speck); }, "the component of the surface with face 320 is thinner");

@@ -437,6 +437,8 @@ degenerate face or two faces that cross, encloses no volume, is thinner than the
 (its mean thickness, 2 volume / area, is smaller) or, as a slab (a surface whose faces spread ten
 times less in one direction than in the others), than half the facet size (a plate 0.02 thick
 meshed at a facet size of 0.058 came out with touching tetrahedra, at 0.035 it came out right), or
+is a slab whose rim is a knife edge (a sharp edge, per `sharp_edge_angle`, whose faces' normals
+differ by more than 150 degrees: Mesh_3 would protect it for minutes at any size), or
 has a component that is (2 |volume| / area of that component; the error names one of its faces),
 has two components closer than the facet
 distance (the error names a face of each) or two sharp edges (those protected, see

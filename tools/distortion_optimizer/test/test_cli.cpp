@@ -1329,8 +1329,9 @@ void write_cube(const std::string& path)
 }
 
 // The icosahedron's faces split in four `levels` times, on the unit sphere, with y scaled by
-// `squash` (0.01 makes a knife-edged disc, whose sharp rim Mesh_3 takes long to protect).
-void write_icosphere(const std::string& path, int levels, double squash)
+// `squash` (0.01 makes a knife-edged disc) and, with `spike`, its first vertex pulled out to
+// y = spike (a spike Mesh_3 takes long to protect).
+void write_icosphere(const std::string& path, int levels, double squash, double spike = 0)
 {
   const double g = (1 + std::sqrt(5.)) / 2;
   std::vector<std::array<double, 3>> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
@@ -1361,6 +1362,7 @@ void write_icosphere(const std::string& path, int levels, double squash)
   std::ofstream out(path);
   out.precision(17);
   out << "OFF\n" << p.size() << ' ' << f.size() << " 0\n";
+  if(spike > 0) p[0][1] = spike / squash;
   for(const auto& x : p) out << x[0] << ' ' << squash * x[1] << ' ' << x[2] << '\n';
   for(const auto& t : f) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
@@ -1523,12 +1525,18 @@ TEST(CommandLine, TheTimeLimitStopsTheMeshing)
   std::remove(o.c_str());
   expect_failed_cleanly(run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o),
                         "Mesh_3 did not finish within the time limit of 0.5 s", o);
-  // Where Mesh_3 runs long steps that check no limit (the protection of a knife-edged rim), the
-  // tool ends the run a moment after the limit.
+  // Where Mesh_3 runs long steps that check no limit (the protection of a long spike), the tool
+  // ends the run a moment after the limit.
+  const std::string spike = temp("spike.off");
+  write_icosphere(spike, 2, 1, 255);
+  expect_failed_cleanly(run("--source " + spike + " --start radial --time-limit 1 --output " + o),
+                        "Mesh_3 did not finish within the time limit of 1 s", o);
+  // A knife-edged disc is refused before Mesh_3 runs (its rim's protection took minutes at the
+  // sizes its thickness allows).
   const std::string disc = temp("flat_disc.off");
   write_icosphere(disc, 2, 0.01);
-  expect_failed_cleanly(run("--source " + disc + " --start radial --cell-size 0.026 --time-limit 1 --output " + o),
-                        "Mesh_3 did not finish within the time limit of 1 s", o);
+  expect_failed_cleanly(run("--source " + disc + " --start radial --cell-size 0.026 --output " + o),
+                        "is a slab whose rim is a knife edge", o);
 }
 
 TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)

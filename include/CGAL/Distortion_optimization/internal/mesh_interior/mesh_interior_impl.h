@@ -180,7 +180,7 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
 
   // What Mesh_3 would not mesh, or not in bounded time and memory, is refused before it starts.
   check_thickness_of_parts(checked, sizes.cell_size, sizes.facet_size, sizes.facet_distance,
-                           affordable_vertices(settings.maximum_given, settings.maximum_vertices));
+                           affordable_vertices(settings.maximum_given, settings.maximum_vertices), sizes.sharp_edge_angle);
   check_components_apart(checked, sizes.facet_distance);
   check_sharp_edges_apart(checked, sizes.sharp_edge_angle, sizes.facet_distance, sizes.edge_size);
   check_vertex_budget(settings, sizes.cell_size, sizes.facet_size);

@@ -14,6 +14,7 @@
 #include <CGAL/Distortion_optimization/internal/mesh_interior/mesh_size_estimate.h>
 
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <Eigen/Dense>
@@ -67,9 +68,6 @@ inline void check_thickness(double volume, double area, bool slab, double cell_s
   throw Invalid_input("mesh_interior: " + what + text + (meshable ? remedy : std::string()));
 }
 
-// The whole volume, then each component (a cavity measured by the space it encloses): a thin
-// component beside thick ones holds up Mesh_3's protection or refinement just as well, or gets no
-// tetrahedron at all.
 // Whether the surface spreads far less in one direction than in the others (a plate, a disc; not
 // a needle): the smallest eigenvalue of the area-weighted second moments of its faces' centroids
 // under a hundredth of the middle one. `moments` holds the area, the first moments and the second
@@ -87,33 +85,65 @@ inline bool is_slab(const std::array<double, 10>& moments)
   return spread[0] < 1e-2 * spread[1];
 }
 
+// The sharpest fold of a part: the largest angle, in degrees, between the normals of two faces
+// that share an edge. A slab whose rim folds by more than knife_fold (faces meeting at less than
+// 30 degrees: a squashed sphere's rim) has its rim protected as a sharp edge by balls that Mesh_3
+// places among nearly coplanar weighted points, for minutes at any size that passes the thickness
+// check, and unprotected its two sides meet: it is refused at once, with no size to advise.
+constexpr double knife_fold = 150;
+
+inline void check_rim(double fold, bool slab, double sharp_edge_angle, const std::string& what)
+{
+  if(!slab || !(fold > knife_fold) || !(fold > sharp_edge_angle)) return;
+  char text[200];
+  std::snprintf(text, sizeof text, " is a slab whose rim is a knife edge (its faces meet there with normals %.0f degrees "
+                "apart): Mesh_3 would not protect it in bounded time at any size; give it a thicker rim", fold);
+  throw Invalid_input("mesh_interior: " + what + text);
+}
+
+// The whole volume, then each component (a cavity measured by the space it encloses): a thin
+// component beside thick ones holds up Mesh_3's protection or refinement just as well, or gets no
+// tetrahedron at all.
 template <class CheckedSurface>
 void check_thickness_of_parts(const CheckedSurface& checked, double cell_size, double facet_size, double facet_distance,
-                              double affordable)
+                              double affordable, double sharp_edge_angle)
 {
   const std::size_t components = checked.component_volume.size();
   std::vector<std::array<double, 10>> moments(components + 1, std::array<double, 10>{});   // the last: all
+  std::vector<Eigen::Vector3d> normal;
   std::size_t f = 0;
   for(auto face : faces(checked.surface)) {
     const auto p = corners(checked.surface, face);
     const double w = std::sqrt(CGAL::to_double(CGAL::squared_area(p[0], p[1], p[2])));
     const double x[3] = {CGAL::to_double(p[0].x() + p[1].x() + p[2].x()) / 3, CGAL::to_double(p[0].y() + p[1].y() + p[2].y()) / 3,
                          CGAL::to_double(p[0].z() + p[1].z() + p[2].z()) / 3};
+    const auto n = CGAL::normal(p[0], p[1], p[2]);
+    normal.push_back(Eigen::Vector3d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())).normalized());
     for(const std::size_t c : {checked.component[f++], components}) {
       std::array<double, 10>& m = moments[c];
       const double terms[10] = {1, x[0], x[1], x[2], x[0] * x[0], x[1] * x[1], x[2] * x[2], x[0] * x[1], x[0] * x[2], x[1] * x[2]};
       for(int k = 0; k < 10; ++k) m[k] += w * terms[k];
     }
   }
-  check_thickness(checked.volume, checked.area, is_slab(moments[components]), cell_size, facet_size, facet_distance,
-                  affordable, "the volume", "its boundary", "");
+  std::vector<double> fold(components + 1, 0.);
+  for(auto e : edges(checked.surface)) {
+    const auto h = halfedge(e, checked.surface), g = opposite(h, checked.surface);
+    const std::size_t a = std::size_t(face(h, checked.surface)), b = std::size_t(face(g, checked.surface));
+    const double angle = std::acos(std::clamp(normal[a].dot(normal[b]), -1., 1.)) * 180 / CGAL_PI;
+    for(const std::size_t c : {checked.component[a], components}) fold[c] = (std::max)(fold[c], angle);
+  }
+  const bool slab = is_slab(moments[components]);
+  check_rim(fold[components], slab, sharp_edge_angle, "the volume");
+  check_thickness(checked.volume, checked.area, slab, cell_size, facet_size, facet_distance, affordable, "the volume",
+                  "its boundary", "");
   std::vector<std::size_t> first_face(components, 0);   // of each component, to name it
   for(std::size_t g = checked.component.size(); g-- > 0;) first_face[checked.component[g]] = g;
-  for(std::size_t c = 0; c < components && components > 1; ++c)
+  for(std::size_t c = 0; c < components && components > 1; ++c) {
+    const std::string what = "the component of the surface with face " + std::to_string(checked.face_names[first_face[c]]);
+    check_rim(fold[c], is_slab(moments[c]), sharp_edge_angle, what);
     check_thickness(std::abs(checked.component_volume[c]), checked.component_area[c], is_slab(moments[c]), cell_size,
-                    facet_size, facet_distance, affordable,
-                    "the component of the surface with face " + std::to_string(checked.face_names[first_face[c]]), "it",
-                    ", or remove it");
+                    facet_size, facet_distance, affordable, what, "it", ", or remove it");
+  }
 }
 
 } // namespace internal
