@@ -521,13 +521,13 @@ TEST(VolumeWorkflow, BadInputIsRejected)
   }
   // A plate 0.02 thick: at the default sizes (facet size 0.058) Mesh_3's tetrahedra would touch
   // across it (after a long refinement, for thinner plates); it is refused at once, and meshed
-  // below twice its thickness, as the message says.
+  // below its thickness, as the message says (and at 0.035 already).
   Surface plate;
   CGAL::make_hexahedron(Point(-1, -1, -0.01), Point(1, -1, -0.01), Point(1, 1, -0.01), Point(-1, 1, -0.01),
                         Point(-1, 1, 0.01), Point(-1, -1, 0.01), Point(1, -1, 0.01), Point(1, 1, 0.01), plate);
   CGAL::Polygon_mesh_processing::triangulate_faces(plate);
   expect_invalid([&] { DO::mesh_interior(plate); }, "than half the facet size (0.0292): Mesh_3 would not recover its boundary; "
-                                                    "give a facet size below 0.0392 (about 1e+04 vertices)");
+                                                    "give a facet size below 0.0196 (about 4.5e+04 vertices)");
   const auto plate_mesh = DO::mesh_interior(plate, DOP::cell_size(0.035));
   EXPECT_GT(plate_mesh.number_of_cells_in_complex(), 1000u);
   EXPECT_THROW(DO::interior_mesh_sizes(open), DO::Invalid_input);

@@ -1626,7 +1626,7 @@ TEST(CommandLine, VolumeModeBadInputGivesAOneLineErrorAndWritesNothing)
                  "the volume is thinner (2 volume / area = 2e-06) than half the facet size");
   // The size that would mesh it asks for far more vertices than fit: no advice that cannot work.
   expect_failure("--source " + plate + " --start ball --output " + o, 1,
-                 "its boundary, and a facet size that would (below 4e-06) asks for about 9.5e+11 vertices, more than the "
+                 "its boundary, and a facet size that would (below 2e-06) asks for about 4.2e+12 vertices, more than the "
                  "maximum: the part is too thin to mesh");
   expect_failure("--source " + cube + " --start ball" + base + " --carry " + cube, 2, "go together");
   expect_failure("--source " + cube + " --start ball --output " + temp("x.off"), 2, "--output must end in .mesh or .vtu");

@@ -37,9 +37,11 @@ namespace internal {
 // `slab` (see is_slab()) thinner than half the facet size: its sides are flat, and the facet
 // distance, which bounds the facets of a curved surface, does not refine them. Throws if the part
 // of volume `volume` and area `area`, named `what` in the message, is that thin; `lost` says what
-// Mesh_3 would not recover and `remedy` ends the message. The facet size advised for a slab asks
-// for a mesh of its own size: the message says how large, and where that is more than
-// `affordable` vertices, that no size both recovers the slab and fits.
+// Mesh_3 would not recover and `remedy` ends the message. The facet size advised for a slab is
+// its thickness, half the size refused (at twice its thickness a plate 1000 times thinner than
+// wide still came out with touching tetrahedra), and asks for a mesh of its own size: the message
+// says how large, and where that is more than `affordable` vertices, that no size both recovers
+// the slab and fits.
 inline void check_thickness(double volume, double area, bool slab, double cell_size, double facet_size,
                             double facet_distance, double affordable, const std::string& what,
                             const std::string& lost, const std::string& remedy)
@@ -49,7 +51,7 @@ inline void check_thickness(double volume, double area, bool slab, double cell_s
   char text[320];
   bool meshable = true;   // at some size that fits
   if(slab && thickness < facet_size / 2) {
-    const double advised = 2 * thickness;
+    const double advised = thickness;
     const double asked = asked_vertices(volume, area, (std::min)(cell_size, advised), advised);
     meshable = asked <= affordable;
     if(meshable)
