@@ -231,6 +231,68 @@ TEST(Atlas, ADistortionBoundCutsAPieceIntoFlatterCharts)
   EXPECT_LT(bounded.result.seam_length_fraction, 0.04);
 }
 
+// A chart shaped like a C and four squares that fit in its mouth: the packer puts them there,
+// denser than any packing of the charts' bounding rectangles could be, each chart at the common
+// scale, turned but not mirrored, inside the unit square and at least the gutter from the others.
+TEST(Atlas, PackingFillsTheHollowsOfCharts)
+{
+  using Vec = DO::internal::Vector<2>;
+  // A chart made of the unit cells `cells` of a grid, each as two counterclockwise triangles.
+  const auto chart_of = [](const std::vector<std::array<int, 2>>& cells, double side) {
+    DO::internal::Chart_to_pack c;
+    for(const auto& [i, j] : cells) {
+      const std::size_t first = c.uv.size();
+      for(const auto& [di, dj] : {std::array<int, 2>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) c.uv.push_back(side * Vec(i + di, j + dj));
+      c.triangles.push_back({first, first + 1, first + 2});
+      c.triangles.push_back({first, first + 2, first + 3});
+      c.area += side * side;
+    }
+    return c;
+  };
+  std::vector<std::array<int, 2>> c_shape;   // 10 x 10, open on the right over rows 2 to 7
+  for(int i = 0; i < 10; ++i)
+    for(int j = 0; j < 10; ++j)
+      if(i < 2 || j < 2 || j >= 8) c_shape.push_back({i, j});
+  std::vector<DO::internal::Chart_to_pack> charts{chart_of(c_shape, 1)};
+  for(int k = 0; k < 4; ++k) charts.push_back(chart_of({{0, 0}}, 2.5));
+  const auto packed_area = [](const DO::internal::Chart_to_pack& c) {
+    double a = 0;
+    for(const auto& t : c.triangles) a += CGAL::area(Point_2(c.uv[t[0]][0], c.uv[t[0]][1]), Point_2(c.uv[t[1]][0], c.uv[t[1]][1]), Point_2(c.uv[t[2]][0], c.uv[t[2]][1]));
+    return a;
+  };
+  const double gutter = 0.01, efficiency = DO::internal::pack_charts(charts, gutter);
+  EXPECT_GT(efficiency, 0.7);   // the rectangles (100 + 4 x 6.25) hold 77: at most 0.62
+  const double scale = packed_area(charts[0]) / 52;
+  std::vector<CGAL::Triangle_2<K>> triangles;
+  std::vector<std::size_t> owner;
+  for(std::size_t k = 0; k < charts.size(); ++k) {
+    EXPECT_NEAR(packed_area(charts[k]) / charts[k].area, scale, 1e-9 * scale);
+    for(const Vec& p : charts[k].uv) EXPECT_TRUE(p[0] >= 0 && p[0] <= 1 && p[1] >= 0 && p[1] <= 1);
+    for(const auto& t : charts[k].triangles) {
+      triangles.emplace_back(Point_2(charts[k].uv[t[0]][0], charts[k].uv[t[0]][1]), Point_2(charts[k].uv[t[1]][0], charts[k].uv[t[1]][1]),
+                             Point_2(charts[k].uv[t[2]][0], charts[k].uv[t[2]][1]));
+      owner.push_back(k);
+      EXPECT_EQ(triangles.back().orientation(), CGAL::COUNTERCLOCKWISE);
+    }
+  }
+  double nearest = std::numeric_limits<double>::infinity();
+  std::size_t inside = 0;   // squares in the C's bounding box
+  for(std::size_t a = 0; a < triangles.size(); ++a)
+    for(std::size_t b = a + 1; b < triangles.size(); ++b) {
+      if(owner[a] == owner[b]) continue;
+      ASSERT_FALSE(CGAL::do_intersect(triangles[a], triangles[b]));
+      for(int i = 0; i < 3; ++i)
+        for(int j = 0; j < 3; ++j)
+          nearest = (std::min)(nearest, CGAL::squared_distance(CGAL::Segment_2<K>(triangles[a][i], triangles[a][i + 1]),
+                                                               CGAL::Segment_2<K>(triangles[b][j], triangles[b][j + 1])));
+    }
+  EXPECT_GE(std::sqrt(nearest), gutter * (1 - 1e-9));
+  const auto squares = triangles.begin() + std::ptrdiff_t(2 * c_shape.size());
+  const auto box = CGAL::bbox_2(triangles.begin(), squares);
+  for(std::size_t k = 0; k + 1 < charts.size(); ++k) inside += CGAL::do_overlap(box, CGAL::bbox_2(squares + 2 * k, squares + 2 * k + 2));
+  EXPECT_GE(inside, 3u);
+}
+
 TEST(Atlas, SeveralPiecesArePackedApartAtOneScale)
 {
   Mesh3 mesh = read("eight.off");

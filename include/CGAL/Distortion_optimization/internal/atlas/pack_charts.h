@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -74,60 +76,75 @@ struct Chart_to_pack
   double area = 0;
 };
 
-// The segments bounding a chart: its triangles' edges that no other triangle of it shares.
-inline std::vector<std::array<Vector<2>, 2>> outline(const Chart_to_pack& chart)
+// Cells of a grid as bits, 64 to a word, each row `words` words long.
+struct Cell_grid
 {
-  std::vector<std::array<std::size_t, 2>> edges;
-  for(const auto& t : chart.triangles)
-    for(int i = 0; i < 3; ++i) edges.push_back({(std::min)(t[i], t[(i + 1) % 3]), (std::max)(t[i], t[(i + 1) % 3])});
-  std::sort(edges.begin(), edges.end());
-  std::vector<std::array<Vector<2>, 2>> result;
-  for(std::size_t i = 0; i < edges.size(); ++i) {
-    if((i + 1 < edges.size() && edges[i + 1] == edges[i]) || (i > 0 && edges[i - 1] == edges[i])) continue;
-    result.push_back({chart.uv[edges[i][0]], chart.uv[edges[i][1]]});
-  }
-  return result;
+  std::size_t width = 0, height = 0, words = 0;
+  std::vector<std::uint64_t> bits;
+  Cell_grid(std::size_t w, std::size_t h) : width(w), height(h), words(w / 64 + 1), bits(words * h, 0) {}
+  std::uint64_t* row(std::size_t y) { return bits.data() + y * words; }
+  const std::uint64_t* row(std::size_t y) const { return bits.data() + y * words; }
+  void set(std::size_t x, std::size_t y) { row(y)[x / 64] |= std::uint64_t(1) << (x % 64); }
+  bool get(std::size_t x, std::size_t y) const { return (row(y)[x / 64] >> (x % 64)) & 1; }
+};
+
+// Marks every cell [x, x + 1] x [y, y + 1] the triangle `p` (in cell units) meets, and a little
+// more: a cell of its bounding box is left only if one of its edges' lines has the whole cell,
+// grown by a millionth, strictly outside (the separating axis test). A chart's cells thus cover it.
+inline void rasterize_triangle(const std::array<Vector<2>, 3>& p, Cell_grid& grid)
+{
+  const double turn = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+  const double sign = turn < 0 ? -1 : 1;
+  const auto cell = [](double t, std::size_t n) { return (std::min)(std::size_t((std::max)(t, 0.)), n - 1); };
+  const std::size_t x0 = cell((std::min)({p[0][0], p[1][0], p[2][0]}), grid.width), x1 = cell((std::max)({p[0][0], p[1][0], p[2][0]}), grid.width);
+  const std::size_t y0 = cell((std::min)({p[0][1], p[1][1], p[2][1]}), grid.height), y1 = cell((std::max)({p[0][1], p[1][1], p[2][1]}), grid.height);
+  const double e = 1e-6;
+  for(std::size_t y = y0; y <= y1; ++y)
+    for(std::size_t x = x0; x <= x1; ++x) {
+      bool outside = false;
+      for(int i = 0; i < 3 && !outside; ++i) {
+        const Vector<2>& a = p[i];
+        const Vector<2>& b = p[(i + 1) % 3];
+        const double nx = (a[1] - b[1]) * sign, ny = (b[0] - a[0]) * sign;   // the edge's inward normal
+        outside = (std::max)(nx * (x - e - a[0]), nx * (x + 1 + e - a[0])) + (std::max)(ny * (y - e - a[1]), ny * (y + 1 + e - a[1])) < 0;
+      }
+      if(!outside) grid.set(x, y);
+    }
 }
 
-// The lowest and highest v a chart reaches in each column [c d, (c + 1) d) of u, given its outline
-// (its least u at 0). Within a vertical slab a polygon reaches its extremes on its outline, so the
-// outline's segments clipped to each column give the exact extents.
-inline void column_profile(const std::vector<std::array<Vector<2>, 2>>& segments, double width, double d,
-                           std::vector<double>& bottom, std::vector<double>& top)
+// Whether `mask`, its cell (0, 0) put on the grid's (x, y), meets none of the grid's cells.
+inline bool fits(const Cell_grid& mask, const Cell_grid& grid, std::size_t x, std::size_t y)
 {
-  const std::size_t columns = std::size_t(width / d) + 1;
-  bottom.assign(columns, std::numeric_limits<double>::infinity());
-  top.assign(columns, -std::numeric_limits<double>::infinity());
-  const auto column = [&](double u) { return (std::min)(std::size_t((std::max)(u, 0.) / d), columns - 1); };
-  for(auto [p, q] : segments) {
-    if(q[0] < p[0]) std::swap(p, q);
-    for(std::size_t c = column(p[0]), last = column(q[0]); c <= last; ++c) {
-      double v0 = p[1], v1 = q[1];   // a vertical segment: both ends
-      if(q[0] > p[0]) {
-        const auto at = [&](double u) { return p[1] + (q[1] - p[1]) * (std::min)(1., (std::max)(0., (u - p[0]) / (q[0] - p[0]))); };
-        v0 = at((std::max)(p[0], c * d)), v1 = at((std::min)(q[0], (c + 1) * d));
-      }
-      bottom[c] = (std::min)(bottom[c], (std::min)(v0, v1));
-      top[c] = (std::max)(top[c], (std::max)(v0, v1));
+  const std::size_t word = x / 64, shift = x % 64;
+  for(std::size_t r = 0; r < mask.height; ++r) {
+    const std::size_t row = (r + mask.height / 2) % mask.height;   // the middle first: a conflict shows early
+    const std::uint64_t *a = mask.row(row), *b = grid.row(y + row) + word;
+    std::uint64_t carry = 0;
+    for(std::size_t i = 0; i < mask.words; ++i) {
+      if((((a[i] << shift) | carry) & b[i]) != 0) return false;
+      carry = shift ? a[i] >> (64 - shift) : 0;
     }
+    if(carry && word + mask.words < grid.words && (carry & b[mask.words]) != 0) return false;
   }
-  for(std::size_t c = 0; c < columns; ++c)   // a column the chart only grazes
-    if(bottom[c] > top[c]) bottom[c] = top[c] = 0;
+  return true;
 }
 
 // Packs the charts into the unit square at one scale (every chart keeps the texel density of the
-// others), turned (never mirrored), `gutter` apart (a fraction of the square's side). Each chart,
-// the largest first, in the best of its four quarter turns from its least bounding rectangle's
-// frame, is dropped like a Tetris piece onto the horizon of those before it, where it raises the
-// packing least and then wastes least space below it (Levy, Petitjean, Ray and Maillot, "Least
-// squares conformal maps for automatic texture atlas generation", 2002). The strip's width is
-// the one, of those tried, whose layout fills the square about it best (the unit square's share
-// the charts take: their texel density). Returns the charts' UV area over that of the rectangle
-// bounding them all.
+// others), turned (never mirrored), `gutter` apart (a fraction of the square's side). The charts
+// are rasterized, conservatively, on a grid of about 256 cells across the root of their area
+// (fewer beyond 300 charts, down to 64, to bound the time); each, the largest first, in the best of its four
+// quarter turns from its least bounding rectangle's frame, goes where its cells meet none taken
+// and the packing's bounding box grows least, then lowest, then leftmost. Unlike dropping charts
+// onto a horizon (Levy, Petitjean, Ray and Maillot, "Least squares conformal maps for automatic
+// texture atlas generation", 2002), this fills the hollows of the charts placed before, as the
+// bitmap packing of game engines' atlas tools does. Taken cells are grown by the gutter, at least
+// one cell: charts never meet. Two ways of weighing the growth are tried (the larger side, then
+// the area; the area with a toll on elongation) and the denser kept. Returns the charts' UV area
+// over that of the rectangle bounding them all.
 inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
 {
-  const std::size_t n = charts.size(), columns = 256;
-  double rectangles = 0, narrowest = 0, longest = 0, area = 0;
+  const std::size_t n = charts.size();
+  double area = 0;
   std::vector<std::array<double, 2>> size(n);
   for(std::size_t k = 0; k < n; ++k) {
     turn_to_least_bounding_rectangle(charts[k].uv);
@@ -135,85 +152,119 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
     for(const auto& p : charts[k].uv) u0 = (std::min)(u0, p[0]), u1 = (std::max)(u1, p[0]), v0 = (std::min)(v0, p[1]), v1 = (std::max)(v1, p[1]);
     for(auto& p : charts[k].uv) p = Vector<2>(p[0] - u0, p[1] - v0);
     size[k] = {u1 - u0, v1 - v0};
-    rectangles += size[k][0] * size[k][1];
-    narrowest = (std::max)(narrowest, size[k][1]);   // the strip must take every chart some way
-    longest = (std::max)(longest, size[k][0]);
     area += charts[k].area;
   }
+  if(n == 0 || !(area > 0)) return 0;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return size[a][0] * size[a][1] > size[b][0] * size[b][1]; });
 
-  // Each chart's outline in its four turns (about its rectangle's centre, back to u, v >= 0),
-  // turned once for all the strips tried.
+  // Each chart in its four turns (about its rectangle's centre, back to u, v >= 0), as cells.
   const auto turned = [&](std::size_t k, int turn, const Vector<2>& p) {
     const double w = size[k][0], h = size[k][1], u = p[0], v = p[1];
     return turn == 0 ? p : turn == 1 ? Vector<2>(h - v, u) : turn == 2 ? Vector<2>(w - u, h - v) : Vector<2>(v, w - u);
   };
-  std::vector<std::array<std::vector<std::array<Vector<2>, 2>>, 4>> outlines(n);
-  for(std::size_t k = 0; k < n; ++k)
-    for(const auto& [p, q] : outline(charts[k]))
-      for(int turn = 0; turn < 4; ++turn) outlines[k][turn].push_back({turned(k, turn, p), turned(k, turn, q)});
-  struct Placement { int turn = 0; std::size_t column = 0; double v = 0; };
-  std::vector<Placement> placed(n);
-  // One packing in a strip `strip` wide: the charts' places and the extents of their union.
-  const auto drop = [&](double strip, double gap, std::vector<Placement>& at, double& extent_u, double& extent_v) {
-    const double d = strip / columns;
-    const std::size_t spread = std::size_t(std::ceil(gap / d));
-    std::vector<double> horizon(columns, 0), bottom, top;
-    extent_u = extent_v = 0;
+  const double d = std::sqrt(area) / (std::max)(64., 256 * (std::min)(1., std::sqrt(300. / double(n))));   // a cell's side
+  std::vector<std::vector<Cell_grid>> masks(n);
+  std::vector<std::array<std::size_t, 2>> extent(n);   // in cells
+  std::size_t longest = 0;
+  for(std::size_t k = 0; k < n; ++k) {
+    const std::size_t w = std::size_t(size[k][0] / d) + 1, h = std::size_t(size[k][1] / d) + 1;
+    for(int turn = 0; turn < 4; ++turn) {
+      masks[k].emplace_back(turn % 2 ? h : w, turn % 2 ? w : h);
+      for(const auto& t : charts[k].triangles) {
+        std::array<Vector<2>, 3> p;
+        for(int i = 0; i < 3; ++i) p[i] = turned(k, turn, charts[k].uv[t[i]]) / d;
+        rasterize_triangle(p, masks[k][turn]);
+      }
+    }
+    extent[k] = {w, h}, longest = (std::max)(longest, (std::max)(w, h));
+  }
+
+  struct Placement { int turn = 0; std::size_t x = 0, y = 0; };
+  // Every chart placed with its taken cells grown by `g`, the growth weighed one of two ways, in a
+  // square of `cap` cells; false if one did not fit.
+  const auto place = [&](std::size_t g, int weighing, std::size_t cap, std::vector<Placement>& at) {
+    Cell_grid grid(cap, cap);
+    std::size_t W = 0, H = 0;
+    // The growth of the packing's bounding box (W, H) by a chart put at (x, y), then lower, then
+    // more to the left; as a lexicographic key.
+    const auto score = [&](std::size_t x, std::size_t y, const Cell_grid& m) {
+      const std::size_t u = (std::max)(W, x + m.width), v = (std::max)(H, y + m.height);
+      const std::size_t large = (std::max)(u, v), small = (std::min)(u, v);
+      return weighing == 0 ? std::array<std::size_t, 4>{large, u * v, y, x}
+                           : std::array<std::size_t, 4>{u * v + (large - small) * large / 4, large, y, x};
+    };
     for(std::size_t k : order) {
-      double best = std::numeric_limits<double>::infinity();
-      std::vector<double> best_top;
+      std::array<std::size_t, 4> best{std::size_t(-1), 0, 0, 0};
       for(int turn = 0; turn < 4; ++turn) {
-        column_profile(outlines[k][turn], size[k][turn % 2], d, bottom, top);
-        if(bottom.size() > columns) continue;
-        for(std::size_t x = 0; x + bottom.size() <= columns; ++x) {
-          double v = 0, waste = 0;
-          for(std::size_t c = 0; c < bottom.size(); ++c) v = (std::max)(v, horizon[x + c] - bottom[c]);
-          for(std::size_t c = 0; c < bottom.size(); ++c) waste += v + bottom[c] - horizon[x + c];
-          double high = 0;
-          for(std::size_t c = 0; c < top.size(); ++c) high = (std::max)(high, v + top[c]);
-          const double score = (std::max)(high, extent_v) * strip + waste * d;
-          if(score < best) best = score, at[k] = {turn, x, v}, best_top = top;
+        const Cell_grid& m = masks[k][turn];
+        std::size_t first = 0;   // a cell of the chart (its first): where it lands must be free
+        while(first + 1 < m.width * m.height && !m.get(first % m.width, first / m.width)) ++first;
+        const std::size_t c0 = first % m.width, r0 = first / m.width;
+        for(std::size_t y = 0; y <= H + g && y + m.height <= cap; ++y) {
+          if(!(score(0, y, m) < best)) break;   // the least score a row can give only grows with y
+          const std::uint64_t* row = grid.row(y + r0);
+          for(std::size_t x = 0; x <= W + g && x + m.width <= cap; ++x) {
+            // the next x whose (c0, r0) lands on a free cell, skipping taken cells 64 at a time
+            std::size_t c = x + c0, word = c / 64;
+            std::uint64_t free = ~row[word] & (~std::uint64_t(0) << (c % 64));
+            while(free == 0 && ++word < grid.words) free = ~row[word];
+            if(free == 0) break;
+            x = word * 64 + std::size_t(std::ilogb(double(free & (~free + 1)))) - c0;   // its lowest bit
+            if(x > W + g || x + m.width > cap) break;
+            const std::array<std::size_t, 4> s = score(x, y, m);
+            if(s < best && fits(m, grid, x, y)) best = s, at[k] = {turn, x, y};
+          }
         }
       }
+      if(best[0] == std::size_t(-1)) return false;
       const Placement& p = at[k];
-      for(std::size_t c = 0; c < best_top.size(); ++c)
-        for(std::size_t j = p.column + c >= spread ? p.column + c - spread : 0; j <= (std::min)(columns - 1, p.column + c + spread); ++j)
-          horizon[j] = (std::max)(horizon[j], p.v + best_top[c] + gap);
-      const bool across = p.turn % 2 == 1;
-      extent_u = (std::max)(extent_u, p.column * d + size[k][across ? 1 : 0]);
-      extent_v = (std::max)(extent_v, p.v + size[k][across ? 0 : 1]);
+      const Cell_grid& m = masks[k][p.turn];
+      for(std::size_t r = 0; r < m.height; ++r)
+        for(std::size_t c = 0; c < m.width; ++c)
+          if(m.get(c, r))
+            for(std::size_t y = p.y + r >= g ? p.y + r - g : 0; y <= (std::min)(cap - 1, p.y + r + g); ++y)
+              for(std::size_t x = p.x + c >= g ? p.x + c - g : 0; x <= (std::min)(cap - 1, p.x + c + g); ++x) grid.set(x, y);
+      W = (std::max)(W, p.x + m.width), H = (std::max)(H, p.y + m.height);
     }
+    return true;
   };
-  // The gap is a fraction of the final side, which depends on the gap: two passes settle it.
-  double side = std::sqrt(rectangles), extent_u = 0, extent_v = 0, strip_used = 0;
-  for(int pass = 0; pass < 2; ++pass) {
-    const double gap = gutter * side;
-    double best = -1;
-    std::vector<Placement> at(n);
-    for(int i = 0; i <= 12; ++i) {
-      // Near the square the rectangles would fill, or near the longest chart's length (which a
-      // narrower strip would stand on end).
-      const double strip = (std::max)(narrowest * (1 + 1e-9) + gap, i <= 8 ? std::sqrt(rectangles) * (0.8 + 0.1 * i)
-                                                                             : longest * (1 + 0.1 * (i - 9)) + gap);
-      double eu = 0, ev = 0;
-      drop(strip, gap, at, eu, ev);
-      const double square = area / ((std::max)(eu, ev) * (std::max)(eu, ev));
-      if(square > best) best = square, placed = at, extent_u = eu, extent_v = ev, strip_used = strip;
+  const auto extents = [&](const std::vector<Placement>& at) {
+    std::array<double, 2> e{0, 0};
+    for(std::size_t k = 0; k < n; ++k)
+      for(const auto& q : charts[k].uv) {
+        const Vector<2> t = turned(k, at[k].turn, q);
+        e = {(std::max)(e[0], t[0] + at[k].x * d), (std::max)(e[1], t[1] + at[k].y * d)};
+      }
+    return e;
+  };
+  // The gap is a fraction of the final side, which depends on the gap: a second pass settles it
+  // (with very many charts no gap of that size may exist; the second pass's is kept).
+  std::vector<Placement> placed(n);
+  double best = -1, side = 0;
+  for(int weighing = 0; weighing < 2; ++weighing) {
+    double guess = std::sqrt(area / 0.6) / (1 - 2 * gutter);
+    for(int pass = 0; pass < 2; ++pass) {
+      const std::size_t g = (std::max)(std::size_t(1), std::size_t(std::ceil(gutter * guess / d)));
+      double cells = 0;   // twice the side of a square holding every chart's rectangle with its gap should do
+      for(const auto& [w, h] : extent) cells += double(w + g) * double(h + g);
+      std::size_t cap = 2 * std::size_t(std::sqrt(cells)) + longest + g;
+      std::vector<Placement> at(n);
+      while(!place(g, weighing, cap, at)) cap *= 2;
+      const std::array<double, 2> e = extents(at);
+      guess = (std::max)(e[0], e[1]) / (1 - 2 * gutter);
+      if((gutter * guess <= g * d || pass == 1) && area / (e[0] * e[1]) > best) best = area / (e[0] * e[1]), placed = at, side = guess;
+      if(gutter * guess <= g * d) break;
     }
-    side = (std::max)(extent_u, extent_v) / (1 - 2 * gutter);
   }
-  const double margin = gutter * side, d = strip_used / columns;
-  for(std::size_t k = 0; k < n; ++k) {
-    const Placement& p = placed[k];
+  const double margin = gutter * side;
+  for(std::size_t k = 0; k < n; ++k)
     for(auto& q : charts[k].uv) {
-      const Vector<2> t = turned(k, p.turn, q);
-      q = Vector<2>((t[0] + p.column * d + margin) / side, (t[1] + p.v + margin) / side);
+      const Vector<2> t = turned(k, placed[k].turn, q);
+      q = Vector<2>((t[0] + placed[k].x * d + margin) / side, (t[1] + placed[k].y * d + margin) / side);
     }
-  }
-  return area / (extent_u * extent_v);
+  return best;
 }
 
 } // namespace internal
