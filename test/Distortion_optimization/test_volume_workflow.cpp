@@ -519,6 +519,15 @@ TEST(VolumeWorkflow, BadInputIsRejected)
       expect_invalid([&] { DO::mesh_interior(flat, DOP::cell_size(1e-9, DOP::sharp_edge_angle(180.))); }, "more than 2 million");
     }
   }
+  // A needle (an icosahedron's vertex pulled 1000 times as far out): its tip's faces meet within
+  // 0.3 degrees; about such tips Mesh_3 ran for minutes, or failed a check of its own: refused at once.
+  Surface needle = icosahedron(1);
+  const Point centre(0.3, -0.2, 0.1);
+  needle.point(*needle.vertices().begin()) = centre + 1000 * (needle.point(*needle.vertices().begin()) - centre);
+  expect_invalid([&] { DO::mesh_interior(needle); }, "the surface has a needle tip at a corner of face 4 (its faces' angles there sum to 0.3");
+  // A check of CGAL's own failing inside Mesh_3 becomes one line (CGAL's message spans several).
+  expect_invalid([] { DO::internal::mesh_3_or_invalid_input([]() -> int { CGAL_error_msg("Mesh_3 ERROR: a check\nDebugging: ..."); }); },
+                 "mesh_interior: Mesh_3 failed a check of its own (Mesh_3 ERROR: a check, test_volume_workflow.cpp:");
   // A plate 0.02 thick: at the default sizes (facet size 0.058) Mesh_3's tetrahedra would touch
   // across it (after a long refinement, for thinner plates); it is refused at once, and meshed
   // below its thickness, as the message says (and at 0.035 already).

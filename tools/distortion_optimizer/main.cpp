@@ -11,6 +11,8 @@
 #include "staged_output.h"
 #include "tool.h"
 
+#include <CGAL/exceptions.h>
+
 #include <dlfcn.h>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -143,6 +145,12 @@ int main(int argc, char** argv)
   } catch(const std::bad_alloc&) {
     std::cerr << "distortion_optimizer: out of memory (a mesh too large for this machine, or --subdivide with too many "
                  "levels: each multiplies the cells by 4); nothing written\n";
+    return 1;
+  } catch(const CGAL::Failure_exception& e) {
+    // CGAL's own message spans lines (file, line, explanation): its first line and where.
+    const std::string text = e.message().empty() ? e.expression() : e.message();
+    std::cerr << "distortion_optimizer: CGAL failed a check of its own (" << text.substr(0, text.find('\n')) << ", "
+              << e.filename().substr(e.filename().find_last_of('/') + 1) << ":" << e.line_number() << "); nothing written\n";
     return 1;
   } catch(const std::exception& e) {
     std::cerr << "distortion_optimizer: " << e.what() << "\n";

@@ -438,7 +438,9 @@ degenerate face or two faces that cross, encloses no volume, is thinner than the
 times less in one direction than in the others), than half the facet size (a plate 0.02 thick
 meshed at a facet size of 0.058 came out with touching tetrahedra, at 0.035 it came out right), or
 is a slab whose rim is a knife edge (a sharp edge, per `sharp_edge_angle`, whose faces' normals
-differ by more than 150 degrees: Mesh_3 would protect it for minutes at any size), or
+differ by more than 150 degrees: Mesh_3 would protect it for minutes at any size), or has a
+needle's tip (a vertex whose faces' angles there sum to less than 3 degrees: Mesh_3 would take
+minutes about it, or fail; the error names a face with that corner), or
 has a component that is (2 |volume| / area of that component; the error names one of its faces),
 has two components closer than the facet
 distance (the error names a face of each) or two sharp edges (those protected, see
@@ -447,7 +449,8 @@ such as the two sides of a slit (Mesh_3 would protect them with balls no larger 
 for minutes or without end; the error names their vertices), if a size is not a positive finite
 number (or an angle or ratio is out of its range), if the sizes ask for more vertices than
 `maximum_number_of_vertices` allows (2 million by default), if Mesh_3 reaches
-`maximum_number_of_vertices` or runs longer than `meshing_time_limit`, if the complex has no cell or a component of the surface gets no
+`maximum_number_of_vertices` or runs longer than `meshing_time_limit`, if a check of CGAL's own
+fails inside Mesh_3 (the error gives its first line and place), if the complex has no cell or a component of the surface gets no
 tetrahedron even when seeded (the error names one of its faces), if the boundary of the complex
 is not a 2-manifold after the changes of sides above (tetrahedra that touch only along an edge
 or at a vertex, where parts of the surface are closer than the sizes: the error gives the place;

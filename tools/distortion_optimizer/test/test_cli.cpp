@@ -1329,9 +1329,10 @@ void write_cube(const std::string& path)
 }
 
 // The icosahedron's faces split in four `levels` times, on the unit sphere, with y scaled by
-// `squash` (0.01 makes a knife-edged disc) and, with `spike`, its first vertex pulled out to
-// y = spike (a spike Mesh_3 takes long to protect).
-void write_icosphere(const std::string& path, int levels, double squash, double spike = 0)
+// `squash` (0.01 makes a knife-edged disc); with `spike`, its first vertex pulled out to
+// y = spike (a needle); with `star`, its 12 first vertices pushed out `star` times as far (twelve
+// spikes Mesh_3 takes minutes to protect).
+void write_icosphere(const std::string& path, int levels, double squash, double spike = 0, double star = 0)
 {
   const double g = (1 + std::sqrt(5.)) / 2;
   std::vector<std::array<double, 3>> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
@@ -1363,6 +1364,7 @@ void write_icosphere(const std::string& path, int levels, double squash, double 
   out.precision(17);
   out << "OFF\n" << p.size() << ' ' << f.size() << " 0\n";
   if(spike > 0) p[0][1] = spike / squash;
+  for(std::size_t i = 0; i < 12 && star > 0; ++i) p[i] = {star * p[i][0], star * p[i][1], star * p[i][2]};
   for(const auto& x : p) out << x[0] << ' ' << squash * x[1] << ' ' << x[2] << '\n';
   for(const auto& t : f) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
@@ -1525,12 +1527,17 @@ TEST(CommandLine, TheTimeLimitStopsTheMeshing)
   std::remove(o.c_str());
   expect_failed_cleanly(run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o),
                         "Mesh_3 did not finish within the time limit of 0.5 s", o);
-  // Where Mesh_3 runs long steps that check no limit (the protection of a long spike), the tool
-  // ends the run a moment after the limit.
+  // Where Mesh_3 runs long steps that check no limit (the protection of twelve spikes, over two
+  // minutes without a limit), the tool ends the run a moment after the limit.
+  const std::string star = temp("star.off");
+  write_icosphere(star, 2, 1, 0, 8);
+  expect_failed_cleanly(run("--source " + star + " --start radial --time-limit 1 --output " + o),
+                        "Mesh_3 did not finish within the time limit of 1 s", o);
+  // A needle's tip (faces meeting within 0.25 degrees there) is refused before Mesh_3 runs (92 s
+  // for this one).
   const std::string spike = temp("spike.off");
   write_icosphere(spike, 2, 1, 255);
-  expect_failed_cleanly(run("--source " + spike + " --start radial --time-limit 1 --output " + o),
-                        "Mesh_3 did not finish within the time limit of 1 s", o);
+  expect_failed_cleanly(run("--source " + spike + " --start radial --output " + o), "has a needle tip at a corner of face", o);
   // A knife-edged disc is refused before Mesh_3 runs (its rim's protection took minutes at the
   // sizes its thickness allows).
   const std::string disc = temp("flat_disc.off");

@@ -45,6 +45,7 @@
 #include <CGAL/Distortion_optimization/internal/mesh_interior/thin_parts.h>
 
 #include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/Mesh_error_code.h>
 #include <CGAL/Random.h>
 #include <CGAL/make_mesh_3.h>      // before the optimizers' headers, which miss some of its includes
@@ -147,6 +148,22 @@ inline void check_mesh_3_error(CGAL::Mesh_error_code error, std::size_t maximum_
                         "edge) or a larger maximum");
 }
 
+// Runs `step` (a Mesh_3 call); a check of CGAL's own that fails inside it, as some needle-like
+// features make Mesh_3's refinement do, becomes the package's one-line error.
+template <class Step>
+decltype(auto) mesh_3_or_invalid_input(Step&& step)
+{
+  try {
+    return step();
+  } catch(const CGAL::Failure_exception& e) {
+    const std::string text = e.message().empty() ? e.expression() : e.message();
+    const std::string file = e.filename().substr(e.filename().find_last_of('/') + 1);
+    throw Invalid_input("mesh_interior: Mesh_3 failed a check of its own (" + text.substr(0, text.find('\n')) + ", " + file + ":" +
+                        std::to_string(e.line_number()) + "): the surface may have a spike or a feature too sharp for "
+                        "Mesh_3 at these sizes; try another cell size or blunt the feature");
+  }
+}
+
 // The optimizers as make_mesh_3 runs them, in its order. time_limit = 0 means none: a time limit
 // would make the output depend on the machine's speed (Mesh_3's default limit for perturbation
 // and exudation is the refinement time).
@@ -196,8 +213,10 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
   const auto options = mp::mesh_3_options(mp::maximal_number_of_vertices = settings.maximum_vertices,
                                           mp::pointer_to_error_code = &error,
                                           mp::pointer_to_stop_atomic_boolean = deadline.flag());
-  typename Types::C3T3 c3t3 = CGAL::make_mesh_3<typename Types::C3T3>(
-    domain, criteria, mp::features(domain), mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(), options);
+  typename Types::C3T3 c3t3 = mesh_3_or_invalid_input([&] {
+    return CGAL::make_mesh_3<typename Types::C3T3>(domain, criteria, mp::features(domain), mp::no_odt(), mp::no_lloyd(),
+                                                   mp::no_perturb(), mp::no_exude(), options);
+  });
   deadline.check();
   check_mesh_3_error(error, settings.maximum_vertices);
 
@@ -207,15 +226,17 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
   const auto seeds = seeds_of_missed_components(c3t3, domain, checked.surface, checked.component, missed);
   if(!seeds.empty()) {
     insert_seeds(c3t3, seeds);
-    CGAL::refine_mesh_3(c3t3, domain, criteria, mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(),
-                        mp::no_reset_c3t3(), options);
+    mesh_3_or_invalid_input([&] {
+      CGAL::refine_mesh_3(c3t3, domain, criteria, mp::no_odt(), mp::no_lloyd(), mp::no_perturb(), mp::no_exude(),
+                          mp::no_reset_c3t3(), options);
+    });
     deadline.check();
     check_mesh_3_error(error, settings.maximum_vertices);
     seeds_of_missed_components(c3t3, domain, checked.surface, checked.component, missed);
   }
   check_no_missed_component(missed, checked.face_names);
 
-  run_mesh_3_optimizers(c3t3, domain, settings);
+  mesh_3_or_invalid_input([&] { run_mesh_3_optimizers(c3t3, domain, settings); });
 
   // The repairs that make the complex a mesh the maps of the package take.
   match_facets_to_cells(c3t3);

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// A check of mesh_interior() before Mesh_3 runs: a volume, or a component of it, too thin for the
-// sizes, whose boundary Mesh_3 would not recover.
+// Checks of mesh_interior() before Mesh_3 runs: a volume, or a component of it, too thin for the
+// sizes, whose boundary Mesh_3 would not recover; a knife-edged rim or a needle tip, about which
+// it would run for minutes.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MESH_INTERIOR_THIN_PARTS_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_MESH_INTERIOR_THIN_PARTS_H
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -103,6 +105,23 @@ inline void check_rim(double fold, bool slab, double sharp_edge_angle, const std
   throw Invalid_input("mesh_interior: " + what + text);
 }
 
+// A vertex whose faces' angles there sum to less than needle_angle degrees is the tip of a
+// needle (a cone of under half a degree, over 100 times as long as wide). Mesh_3 spends minutes
+// about such a tip, the sharper the longer, and its refinement sometimes fails a check of its own
+// there: refused at once, with the face whose corner it is. `corner_angles` holds each vertex's
+// sum, `face_of_vertex` a face of each.
+constexpr double needle_angle = 3;
+inline void check_needle_tips(const std::vector<double>& corner_angles, const std::vector<std::size_t>& face_of_vertex)
+{
+  const auto tip = std::min_element(corner_angles.begin(), corner_angles.end());
+  if(tip == corner_angles.end() || !(*tip < needle_angle)) return;
+  char text[300];
+  std::snprintf(text, sizeof text, "mesh_interior: the surface has a needle tip at a corner of face %zu (its faces' angles "
+                "there sum to %.2g degrees, under %g): Mesh_3 would take minutes about it at any size, or fail; blunt it",
+                face_of_vertex[std::size_t(tip - corner_angles.begin())], *tip, needle_angle);
+  throw Invalid_input(text);
+}
+
 // The whole volume, then each component (a cavity measured by the space it encloses): a thin
 // component beside thick ones holds up Mesh_3's protection or refinement just as well, or gets no
 // tetrahedron at all.
@@ -113,9 +132,19 @@ void check_thickness_of_parts(const CheckedSurface& checked, double cell_size, d
   const std::size_t components = checked.component_volume.size();
   std::vector<std::array<double, 10>> moments(components + 1, std::array<double, 10>{});   // the last: all
   std::vector<Eigen::Vector3d> normal;
+  std::vector<double> corner_angles(num_vertices(checked.surface), std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> face_of_vertex(num_vertices(checked.surface), 0);
   std::size_t f = 0;
   for(auto face : faces(checked.surface)) {
     const auto p = corners(checked.surface, face);
+    auto h = halfedge(face, checked.surface);
+    for(int k = 0; k < 3; ++k, h = next(h, checked.surface)) {   // the corner at h's target
+      const auto& m = checked.surface;
+      const std::size_t v = std::size_t(target(h, m));
+      double& sum = corner_angles[v];   // infinite until the vertex's first face
+      sum = (std::isinf(sum) ? 0 : sum) + CGAL::approximate_angle(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
+      face_of_vertex[v] = checked.face_names[f];
+    }
     const double w = std::sqrt(CGAL::to_double(CGAL::squared_area(p[0], p[1], p[2])));
     const double x[3] = {CGAL::to_double(p[0].x() + p[1].x() + p[2].x()) / 3, CGAL::to_double(p[0].y() + p[1].y() + p[2].y()) / 3,
                          CGAL::to_double(p[0].z() + p[1].z() + p[2].z()) / 3};
@@ -134,6 +163,7 @@ void check_thickness_of_parts(const CheckedSurface& checked, double cell_size, d
     const double angle = std::acos(std::clamp(normal[a].dot(normal[b]), -1., 1.)) * 180 / CGAL_PI;
     for(const std::size_t c : {checked.component[a], components}) fold[c] = (std::max)(fold[c], angle);
   }
+  check_needle_tips(corner_angles, face_of_vertex);
   const bool slab = is_slab(moments[components]);
   check_rim(fold[components], slab, sharp_edge_angle, "the volume");
   check_thickness(checked.volume, checked.area, slab, cell_size, facet_size, facet_distance, affordable, "the volume",
