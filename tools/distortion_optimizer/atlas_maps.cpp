@@ -26,6 +26,7 @@ namespace distortion_optimizer {
 std::string option_of_one_map(const Command_line& c)
 {
   if(c.fix != "boundary" && c.fix != "none") return "--fix FILE";
+  if(c.fix_given && c.fix == "boundary") return "--fix boundary (an atlas's borders are free)";
   if(c.subdivide > 0) return "--subdivide";
   if(!c.vertex_weights.empty()) return "--vertex-weights";
   if(!c.flat_output.empty()) return "--flat-output";

@@ -1020,6 +1020,8 @@ TEST(CommandLine, BadInputGivesAOneLineErrorAndWritesNothing)
                  "has a closed piece or a handle, so its map to the plane is an atlas with seams, whose UVs are per corner: give an .obj output");
   expect_failure("--source " + disk_and_closed + " --output " + temp("atlas.obj") + " --subdivide 1 --subdivided-source " + temp("atlas_fine.off"), 1,
                  "--subdivide does not apply to it");
+  expect_failure("--source " + disk_and_closed + " --output " + temp("atlas.obj") + " --fix boundary", 1,
+                 "--fix boundary (an atlas's borders are free) does not apply to it");
   // Its closed piece mapped into the plane: no untangling can help, and the messages say why.
   const std::string flat = temp("disk_and_closed_flat.off");
   std::ofstream(flat) << "OFF\n7 5 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n5.3 0.3 0\n"
