@@ -249,7 +249,8 @@ of a long thin bar), which no map can measure: it is flipped away (a 3-2 flip of
 2-3 flip where the edge has four cells around it), among cells of the complex: the triangulation
 stays valid with positive cells but is no longer the regular one. Two runs with the same input
 give the same complex (the random generator of Mesh_3 is seeded, the optimizers have no time
-limit).
+limit, but for the exudation's, twice the refinement's time and 10 s at least, which only
+surfaces with several long spikes reached, after minutes without it).
 
 Defaults. Without sizes, the criteria scale with the enclosed volume V and the area A of the
 surface: cell_size = facet_size = edge_size = max(cbrt(V / 6000), sqrt(A / 2400)),

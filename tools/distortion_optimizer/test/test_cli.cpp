@@ -1529,8 +1529,8 @@ TEST(CommandLine, TheTimeLimitStopsTheMeshing)
   std::remove(o.c_str());
   expect_failed_cleanly(run("--source " + cube + " --start ball --cell-size 0.02 --time-limit 0.5 --output " + o),
                         "Mesh_3 did not finish within the time limit of 0.5 s", o);
-  // Where Mesh_3 runs long steps that check no limit (the protection of twelve spikes, over two
-  // minutes without a limit), the tool ends the run a moment after the limit.
+  // Twelve spikes (17 s in Mesh_3 without a limit; over two minutes before the exudation had one)
+  // stop at the limit too.
   const std::string star = temp("star.off");
   write_icosphere(star, 2, 1, 0, 8);
   expect_failed_cleanly(run("--source " + star + " --start radial --time-limit 1 --output " + o),

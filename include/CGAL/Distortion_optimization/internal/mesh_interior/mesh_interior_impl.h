@@ -164,11 +164,14 @@ decltype(auto) mesh_3_or_invalid_input(Step&& step)
   }
 }
 
-// The optimizers as make_mesh_3 runs them, in its order. time_limit = 0 means none: a time limit
-// would make the output depend on the machine's speed (Mesh_3's default limit for perturbation
-// and exudation is the refinement time).
+// The optimizers as make_mesh_3 runs them, in its order. ODT, Lloyd and the perturbation have
+// no time limit: one would make the output depend on the machine's speed (Mesh_3's default limit
+// for perturbation and exudation is the refinement time). The exudation, which has no other
+// bound, gets twice the refinement's `refinement_seconds`, 10 s at least: on surfaces with
+// several long spikes it ran for minutes after a refinement of seconds; only there does the
+// output depend on the machine.
 template <class C3T3, class Domain>
-void run_mesh_3_optimizers(C3T3& c3t3, const Domain& domain, const Mesh_3_settings& settings)
+void run_mesh_3_optimizers(C3T3& c3t3, const Domain& domain, const Mesh_3_settings& settings, double refinement_seconds)
 {
   using D = Interior_mesh_defaults;
   namespace mp = CGAL::parameters;   // Mesh_3's Boost.Parameter keywords live there
@@ -177,8 +180,9 @@ void run_mesh_3_optimizers(C3T3& c3t3, const Domain& domain, const Mesh_3_settin
   if(settings.lloyd_iterations > 0)
     CGAL::lloyd_optimize_mesh_3(c3t3, domain, mp::time_limit = 0, mp::max_iteration_number = settings.lloyd_iterations);
   if(settings.perturb_slivers) CGAL::perturb_mesh_3(c3t3, domain, mp::time_limit = 0);
-  if(settings.exude_slivers) CGAL::exude_mesh_3(c3t3, mp::time_limit = 0);
-  else CGAL::exude_mesh_3(c3t3, mp::sliver_bound = D::sliver_bound, mp::time_limit = 0);
+  const double exudation_limit = (std::max)(10., 2 * refinement_seconds);
+  if(settings.exude_slivers) CGAL::exude_mesh_3(c3t3, mp::time_limit = exudation_limit);
+  else CGAL::exude_mesh_3(c3t3, mp::sliver_bound = D::sliver_bound, mp::time_limit = exudation_limit);
 }
 
 // mesh_interior() on the checked copy of its surface, with the sizes (an `Interior_mesh_sizes`,
@@ -210,6 +214,7 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
                                           mp::cell_size = s * sizes.cell_size);
   CGAL::Mesh_error_code error = CGAL::CGAL_MESH_3_NO_ERROR;
   Mesh_3_deadline deadline(settings.time_limit);
+  const auto refinement_start = std::chrono::steady_clock::now();
   const auto options = mp::mesh_3_options(mp::maximal_number_of_vertices = settings.maximum_vertices,
                                           mp::pointer_to_error_code = &error,
                                           mp::pointer_to_stop_atomic_boolean = deadline.flag());
@@ -236,7 +241,8 @@ typename Types::C3T3 mesh_interior_impl(const CheckedSurface& checked, const Siz
   }
   check_no_missed_component(missed, checked.face_names);
 
-  mesh_3_or_invalid_input([&] { run_mesh_3_optimizers(c3t3, domain, settings); });
+  const double refinement_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - refinement_start).count();
+  mesh_3_or_invalid_input([&] { run_mesh_3_optimizers(c3t3, domain, settings, refinement_seconds); });
 
   // The repairs that make the complex a mesh the maps of the package take.
   match_facets_to_cells(c3t3);
