@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -36,16 +36,24 @@ inline std::vector<std::uint32_t> split_for_packing(const std::vector<std::array
   const std::size_t F = faces.size();
   std::vector<std::uint32_t> part(F, 0);
   if(!(min_fill > 0) || F == 0) return part;
-  // Faces across each edge.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> across;
+  // Faces across each edge: the (edge, face) pairs sorted by edge; an edge that two faces share
+  // joins them.
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> sides;   // ends of the edge, face
+  sides.reserve(3 * F);
   for(std::uint32_t f = 0; f < F; ++f)
     for(int i = 0; i < 3; ++i) {
       const std::uint32_t a = faces[f][i], b = faces[f][(i + 1) % 3];
-      across[{(std::min)(a, b), (std::max)(a, b)}].push_back(f);
+      sides.emplace_back((std::min)(a, b), (std::max)(a, b), f);
     }
+  std::sort(sides.begin(), sides.end());
   std::vector<std::vector<std::uint32_t>> neighbours(F);
-  for(const auto& [e, fs] : across)
-    if(fs.size() == 2) neighbours[fs[0]].push_back(fs[1]), neighbours[fs[1]].push_back(fs[0]);
+  for(std::size_t i = 0, j; i < sides.size(); i = j) {
+    for(j = i + 1; j < sides.size() && std::get<0>(sides[j]) == std::get<0>(sides[i]) && std::get<1>(sides[j]) == std::get<1>(sides[i]);) ++j;
+    if(j - i == 2) {
+      const std::uint32_t f = std::get<2>(sides[i]), g = std::get<2>(sides[i + 1]);
+      neighbours[f].push_back(g), neighbours[g].push_back(f);
+    }
+  }
   const auto area = [&](std::uint32_t f) {
     const Vector<2> a = uv[faces[f][1]] - uv[faces[f][0]], b = uv[faces[f][2]] - uv[faces[f][0]];
     return 0.5 * std::abs(a[0] * b[1] - a[1] * b[0]);
