@@ -3,5 +3,14 @@
 //
 // Group 1 of the shared instantiations (extern_templates.h), of dimension 2.
 
-#define DISTORTION_INSTANTIATE 1
 #include "extern_templates.h"
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+DISTORTION_GROUP_1(2, )
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL

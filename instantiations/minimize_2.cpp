@@ -3,5 +3,14 @@
 //
 // Group 2 of the shared instantiations (extern_templates.h), of dimension 2.
 
-#define DISTORTION_INSTANTIATE 2
 #include "extern_templates.h"
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+DISTORTION_GROUP_2(2, )
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL

@@ -3,5 +3,14 @@
 //
 // Group 3 of the shared instantiations (extern_templates.h), of dimension 2.
 
-#define DISTORTION_INSTANTIATE 3
 #include "extern_templates.h"
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+DISTORTION_GROUP_3(2, )
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL

@@ -3,5 +3,14 @@
 //
 // Group 4 of the shared instantiations (extern_templates.h), of dimension 3.
 
-#define DISTORTION_INSTANTIATE 4
 #include "extern_templates.h"
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+DISTORTION_GROUP_1(3, )
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL

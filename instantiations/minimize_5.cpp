@@ -3,5 +3,14 @@
 //
 // Group 5 of the shared instantiations (extern_templates.h), of dimension 3.
 
-#define DISTORTION_INSTANTIATE 5
 #include "extern_templates.h"
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+DISTORTION_GROUP_2(3, )
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL

@@ -3,5 +3,14 @@
 //
 // Group 6 of the shared instantiations (extern_templates.h), of dimension 3.
 
-#define DISTORTION_INSTANTIATE 6
 #include "extern_templates.h"
+
+namespace CGAL {
+namespace Distortion_optimization {
+namespace internal {
+
+DISTORTION_GROUP_3(3, )
+
+} // namespace internal
+} // namespace Distortion_optimization
+} // namespace CGAL
