@@ -96,8 +96,24 @@ int run_tetrahedra(const Command_line& c)
     const K::Point_3 center = c.center.empty() ? DO::volume_centroid(c3t3) : K::Point_3(c.center[0], c.center[1], c.center[2]);
     // The messages in the tool's words: its options rather than the library's functions.
     try {
-      if(c.start == "ball") DO::star_shaped_to_unit_ball(c3t3, target_map, DO::parameters::center(center));
-      else DO::radial_map(c3t3, target_map, DO::parameters::center(center));
+      if(c.start == "ball") {
+        const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, target_map, DO::parameters::center(center));
+        // The ball map's inside follows the rays from the centre: about a thin part of the domain
+        // along them (a spike), it crushes cells that untangling cannot open. The harmonic map of
+        // the same boundary is smoother there; it is taken when it flattens fewer cells.
+        if(flat > 0) {
+          auto harmonic = storage;
+          DO::harmonic_map(c3t3, boost::associative_property_map<decltype(harmonic)>(harmonic),
+                           DO::parameters::number_of_threads(static_cast<int>(c.threads)));
+          std::size_t harmonic_flat = 0;
+          for(auto cell = c3t3.cells_in_complex_begin(); cell != c3t3.cells_in_complex_end(); ++cell)
+            harmonic_flat += CGAL::orientation(harmonic.at(cell->vertex(0)), harmonic.at(cell->vertex(1)),
+                                               harmonic.at(cell->vertex(2)), harmonic.at(cell->vertex(3))) != CGAL::POSITIVE;
+          if(harmonic_flat < flat) storage = std::move(harmonic);
+        }
+      } else {
+        DO::radial_map(c3t3, target_map, DO::parameters::center(center));
+      }
     } catch(const DO::Center_outside_domain&) {
       throw DO::Invalid_input(c.center.empty() ? "the centroid of the volume is outside it (a volume in several parts, or one "
                                                  "curved around its centroid): give a --center inside"

@@ -1680,6 +1680,24 @@ TEST(CommandLine, VolumeModeMapsAnElongatedBoxOntoTheBall)
   EXPECT_NEAR(farthest, 1., 1e-12);
 }
 
+TEST(CommandLine, ABallMapAboutASpikeStartsFromItsHarmonicInside)
+{
+  // Hostile round 3's sphere with one vertex pulled out three times (D6e): the ball map's rays
+  // crush the spike's inside, and untangling it with the boundary sliding left one cell inverted
+  // after a minute. From the harmonic inside, the tool's start, it untangles at once.
+  const std::string spike = temp("spike_ball.off"), o = temp("spike_ball.mesh"), r = temp("spike_ball.json");
+  write_icosphere(spike, 2, 1);
+  IO::Triangle_soup soup = IO::read_triangle_soup(spike);
+  for(double& x : soup.points[11]) x *= 3;
+  IO::write_triangle_soup(spike, soup);
+  const Tool_run result = run("--source " + spike + " --start ball --iterations 3 --output " + o + " --report " + r);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string json = slurp(r);
+  EXPECT_GT(json_value(json, "inverted_start_cells"), 0) << json;
+  EXPECT_EQ(json_value(json, "inverted_cells"), 0) << json;
+  EXPECT_EQ(non_positive_tetrahedra(IO::read_tetrahedron_soup(o)), 0u);
+}
+
 TEST(CommandLine, EnergiesFarAboveOneAndSubnormalCoordinatesAreOptimizedAsAnyOther)
 {
   // A source 2^140 and 2^150 times larger than its target: symmetric Dirichlet is then |J^-1|^2
