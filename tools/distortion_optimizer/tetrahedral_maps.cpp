@@ -103,13 +103,9 @@ int run_tetrahedra(const Command_line& c)
         // the same boundary is smoother there; it is taken when it flattens fewer cells.
         if(flat > 0) {
           auto harmonic = storage;
-          DO::harmonic_map(c3t3, boost::associative_property_map<decltype(harmonic)>(harmonic),
-                           DO::parameters::number_of_threads(static_cast<int>(c.threads)));
-          std::size_t harmonic_flat = 0;
-          for(auto cell = c3t3.cells_in_complex_begin(); cell != c3t3.cells_in_complex_end(); ++cell)
-            harmonic_flat += CGAL::orientation(harmonic.at(cell->vertex(0)), harmonic.at(cell->vertex(1)),
-                                               harmonic.at(cell->vertex(2)), harmonic.at(cell->vertex(3))) != CGAL::POSITIVE;
-          if(harmonic_flat < flat) storage = std::move(harmonic);
+          const boost::associative_property_map<decltype(harmonic)> harmonic_map(harmonic);
+          DO::harmonic_map(c3t3, harmonic_map, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
+          if(DO::mesh_quality(c3t3, harmonic_map).inverted_cells < flat) storage = std::move(harmonic);
         }
       } else {
         DO::radial_map(c3t3, target_map, DO::parameters::center(center));
