@@ -8,7 +8,9 @@
 # the octopus UV's does not (the guard keeps it so; the guarded rounds leave ears inverted and the
 # untangler starts again from Tutte's embedding). Then CGAL's ARAP parameterizations of lion-head
 # and mannequin-devil (border free, made by the untangle_parameterization example; 330 and 2,673
-# triangles flipped), untangled with the border fixed and free.
+# triangles flipped), untangled with the border fixed and free. Last, the unit square's 61 x 61 grid
+# (7,442 triangles) with its border fixed on an L-shaped domain and four starts of its inside
+# (lshape_grid.awk: left in place, mirrored, random, collapsed).
 #
 #   bash benchmark/Distortion_optimization/bench_untangle.sh [data_dir [threads]]
 #   (default data dir: ../shared/data/abcd beside the repository; run after scripts/test.sh)
@@ -52,4 +54,10 @@ for disk in lion-head mannequin-devil; do
     run "${disk}_arap_$fix" --source "$OUT/${disk}_arap.obj" --target "$OUT/${disk}_arap.obj" --fix "$fix" \
       --measure symmetric_dirichlet --output "$OUT/$disk.obj"
   done
+done
+awk -v n=61 -v start=source -f "$ROOT/benchmark/Distortion_optimization/lshape_grid.awk" > "$OUT/lshape_source.obj"
+for start in grid mirrored random collapsed; do
+  awk -v n=61 -v start=$start -f "$ROOT/benchmark/Distortion_optimization/lshape_grid.awk" > "$OUT/lshape_$start.obj"
+  run "lshape_$start" --source "$OUT/lshape_source.obj" --target "$OUT/lshape_$start.obj" --measure symmetric_dirichlet \
+    --output "$OUT/lshape.obj"
 done

@@ -97,16 +97,7 @@ int run_tetrahedra(const Command_line& c)
     // The messages in the tool's words: its options rather than the library's functions.
     try {
       if(c.start == "ball") {
-        const std::size_t flat = DO::star_shaped_to_unit_ball(c3t3, target_map, DO::parameters::center(center));
-        // The ball map's inside follows the rays from the centre: about a thin part of the domain
-        // along them (a spike), it crushes cells that untangling cannot open. The harmonic map of
-        // the same boundary is smoother there; it is taken when it flattens fewer cells.
-        if(flat > 0) {
-          auto harmonic = storage;
-          const boost::associative_property_map<decltype(harmonic)> harmonic_map(harmonic);
-          DO::harmonic_map(c3t3, harmonic_map, DO::parameters::number_of_threads(static_cast<int>(c.threads)));
-          if(DO::mesh_quality(c3t3, harmonic_map).inverted_cells < flat) storage = std::move(harmonic);
-        }
+        DO::star_shaped_to_unit_ball(c3t3, target_map, DO::parameters::center(center));
       } else {
         DO::radial_map(c3t3, target_map, DO::parameters::center(center));
       }

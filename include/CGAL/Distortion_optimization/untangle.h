@@ -34,6 +34,11 @@ kernel and threads; only the barrier keeps cells from folding, so that a fold ca
 flat states. Constrained vertices never move, and with `preserve_global_injectivity` a
 boundary that does not cross itself never starts to. Every orientation is decided by the
 `geom_traits`' exact predicates.
+Where every border vertex is constrained, the rounds first start from the harmonic map of the
+border over the inside (see `harmonic_map()`) if it has fewer inverted triangles than the start or
+covers less area with them: its folds lie only about the border's reflex corners, where a start's
+may lie anywhere (an inside mirrored, or pushed across the border); from the start if that fails,
+or with `use_harmonic_start(false)`.
 When the rounds end with triangles still inverted and `tm` is a disk (one boundary loop) with at
 most three constrained vertices, the untangling starts again from Tutte's embedding of `tm` (the
 boundary on a circle, each inner vertex the mean of its neighbours), moved onto the constrained
@@ -97,6 +102,14 @@ a measure from the untangled map.
                           inverted (and, with `preserve_global_injectivity`, first without the boundary guard)}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`1000`}
+  \cgalParamNEnd
+
+  \cgalParamNBegin{use_harmonic_start}
+    \cgalParamDescription{if `true`, where every border vertex is constrained, the rounds first start from the
+                          harmonic map of the border when it tangles fewer triangles or less area than the start
+                          (`Distortion_optimization::parameters::use_harmonic_start()`)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
   \cgalParamNEnd
 
   \cgalParamNBegin{preserve_global_injectivity}
@@ -184,8 +197,10 @@ Untangles the map that sends each vertex `v` of the cells of the complex `c3t3` 
 in the triangulation to `get(target, v)` (only the cells in the complex count).
 
 Same as the overload for triangle meshes, see `untangle()`, for tetrahedra, and only what differs
-is documented here: the rounds are the same, but there is no second attempt from Tutte's embedding
-(which the triangle-mesh overload makes for disks).
+is documented here: the rounds are the same, and so is the first attempt from the harmonic map of
+the boundary, made where every boundary vertex is constrained or slides (sliding ones held where
+they are for it), but there is no second attempt from Tutte's embedding (which the triangle-mesh
+overload makes for disks).
 
 \tparam C3T3 a `CGAL::Mesh_complex_3_in_triangulation_3`
 \tparam TargetMap a model of `ReadWritePropertyMap` from `C3T3::Triangulation::Vertex_handle` to a `Point_3`

@@ -30,6 +30,7 @@
 #include <CGAL/Distortion_optimization/Result.h>
 #include <CGAL/Distortion_optimization/errors.h>
 #include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 #include <CGAL/Distortion_optimization/internal/minimize.h>
 #include <CGAL/Distortion_optimization/internal/tutte_embedding.h>
 
@@ -516,10 +517,43 @@ Untangle_result untangle_from_start(Optimization_problem<n>& problem, const Geom
   return report;
 }
 
+// The volume the map's inverted cells cover: what its folds overlap.
+template <int n>
+double folded_volume(const Simplicial_map<n>& map)
+{
+  double folded = 0;
+  for(std::size_t c = 0; c < map.number_of_cells(); ++c) folded += map.rest_volume[c] * std::max(0., -map.jacobian_determinant(c));
+  return folded;
+}
+
+// Where the whole boundary is held (fixed, or sliding on its surface): the harmonic map of the
+// held vertices (where they are) over the others, into x; false where the boundary is not held
+// or the map not defined (Laplacian_system::harmonic_targets). A few held vertices elsewhere (a
+// deformation's anchors) would not do: between them the harmonic map crushes whole parts (a
+// twisted bar held by its ends).
+template <int n>
+bool harmonic_inside(const Optimization_problem<n>& problem, const Workers& workers, std::vector<Vector<n>>& x)
+{
+  std::vector<unsigned char> inside(problem.number_of_vertices());
+  for(std::size_t v = 0; v < inside.size(); ++v) inside[v] = problem.is_free[v] && !problem.slides(v);
+  for(const auto& face : Boundary_guard<n>::boundary_faces(problem.map.cells))
+    for(std::uint32_t v : face)
+      if(inside[v]) return false;
+  if(std::find(inside.begin(), inside.end(), 0) == inside.end()) return false;
+  Laplacian_system<n> system(problem, workers, &inside);
+  return system.harmonic_targets(problem.map.target, x);
+}
+
 // Untangles problem.map in place (untangle_from_start()), or when that fails on a planar disk
 // with at most three constrained vertices or its boundary fixed on a convex polygon, from its Tutte
 // embedding (tutte_embedding.h): an injective map that is untangled already unless rounding left
-// cells flat. Throws as
+// cells flat. Where the boundary is fixed or slides, the untangling first starts (unless
+// options.harmonic_start is off) from the harmonic map of it over the inside (harmonic_inside()) if that tangles fewer cells than the
+// start or folds less volume (folded_volume()). Its folds depend on the boundary alone: it folds
+// only about reflex corners (never on a convex boundary with positive weights: Floater, "One-to-one
+// piecewise linear mappings over triangulations", 2003), where a start's folds (an inside
+// mirrored, or pushed across the boundary) can take the barrier many rounds to undo, and a ball
+// map's rays crush the inside of a spike; it is the optimization's harmonic start too. Throws as
 // untangle_everywhere() when neither applies or succeeds, the map unchanged, and at once for a
 // tangled triangle map with a closed piece, or with the boundary guard a piece with handles and a
 // free border (planar_obstruction()).
@@ -527,14 +561,38 @@ template <int n, class GeomTraits>
 Untangle_result untangle(Optimization_problem<n>& problem, const GeomTraits& traits, const Options& options)
 {
   const auto start = std::chrono::steady_clock::now();
+  const Workers workers(options.threads);
+  const std::size_t tangled = number_of_tangled_cells(problem.map, traits, workers);
   if constexpr(n == 2) {
     const Planar_obstruction o = planar_obstruction(problem.map);
-    if(o.closed >= 0 && number_of_tangled_cells(problem.map, traits, Workers(options.threads)) > 0)
+    if(o.closed >= 0 && tangled > 0)
       throw Invalid_input("untangling cannot succeed: " + closed_piece_message(o.closed));
   }
-  std::size_t rounds = 0;   // the last round reported, numbered over all attempts
+  std::size_t done = 0;   // the rounds of the attempts before, which a later one numbers after
+  const auto finish = [&](Untangle_result report) {   // the report of an attempt that succeeded, over all
+    report.inverted_before = tangled;
+    report.iterations += done;
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+  };
+  std::vector<Vector<n>> harmonic;
+  if(options.harmonic_start && tangled > 0 && harmonic_inside(problem, workers, harmonic)) {
+    const std::vector<Vector<n>> start_targets = problem.map.target;
+    const double folded = folded_volume(problem.map);
+    problem.map.target.swap(harmonic);
+    if(number_of_tangled_cells(problem.map, traits, workers) < tangled || folded_volume(problem.map) < folded) {
+      std::size_t rounds = 0;
+      try {
+        return finish(untangle_from_start(problem, traits, recording_rounds(options, rounds)));
+      } catch(const Invalid_input&) {   // (a free border that crosses, say): the start's own attempt follows
+        done = rounds;
+      }
+    }
+    problem.map.target = start_targets;
+  }
+  std::size_t rounds = 0;
   try {
-    return untangle_from_start(problem, traits, recording_rounds(options, rounds));
+    return finish(untangle_from_start(problem, traits, recording_rounds(continuing(options, done), rounds)));
   } catch(const Crossing_start_boundary&) {
     throw;
   } catch(const Invalid_input&) {
@@ -544,21 +602,15 @@ Untangle_result untangle(Optimization_problem<n>& problem, const GeomTraits& tra
     } else {
       throw;
     }
-    // Of the start map, which the failed attempt restored.
-    const std::size_t inverted_before = number_of_tangled_cells(problem.map, traits, Workers(options.threads));
-    const std::vector<Vector<n>> start_targets = problem.map.target;
+    done += rounds;
+    const std::vector<Vector<n>> start_targets = problem.map.target;   // the start, which the failed attempt restored
     problem.map.target = tutte;
-    Untangle_result report;
     try {
-      report = untangle_everywhere(problem, traits, continuing(options, rounds));
+      return finish(untangle_everywhere(problem, traits, continuing(options, done)));
     } catch(const Invalid_input&) {
       problem.map.target = start_targets;
       throw;
     }
-    report.inverted_before = inverted_before;
-    report.iterations += rounds;
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return report;
   }
 }
 
