@@ -548,8 +548,9 @@ bool harmonic_inside(const Optimization_problem<n>& problem, const Workers& work
 // with at most three constrained vertices or its boundary fixed on a convex polygon, from its Tutte
 // embedding (tutte_embedding.h): an injective map that is untangled already unless rounding left
 // cells flat. Where the boundary is fixed or slides, the untangling first starts (unless
-// options.harmonic_start is off) from the harmonic map of it over the inside (harmonic_inside()) if that tangles fewer cells than the
-// start or folds less volume (folded_volume()). Its folds depend on the boundary alone: it folds
+// options.harmonic_start is off) from the harmonic map of it over the inside (harmonic_inside())
+// if that tangles fewer cells than the start or folds less volume (folded_volume()), and from the
+// start if no injective map is found from there. Its folds depend on the boundary alone: it folds
 // only about reflex corners (never on a convex boundary with positive weights: Floater, "One-to-one
 // piecewise linear mappings over triangulations", 2003), where a start's folds (an inside
 // mirrored, or pushed across the boundary) can take the barrier many rounds to undo, and a ball
@@ -584,7 +585,7 @@ Untangle_result untangle(Optimization_problem<n>& problem, const GeomTraits& tra
       std::size_t rounds = 0;
       try {
         return finish(untangle_from_start(problem, traits, recording_rounds(options, rounds)));
-      } catch(const Invalid_input&) {   // (a free border that crosses, say): the start's own attempt follows
+      } catch(const Invalid_input&) {   // no injective map found from it: the start's own attempt follows
         done = rounds;
       }
     }
