@@ -4,12 +4,18 @@
 // factored by each candidate. Printed per solver: the symbolic analysis, the numeric factorization
 // (the median of three; the package refactors the same pattern many times per run), one solve,
 // the factor's nonzeros and the relative residual. The package's own (internal/sparse_cholesky.h)
-// is Eigen's simplicial LDL^T below 65,536 unknowns and CHOLMOD's supernodal LL^T with METIS on
-// the graph of the vertices above; OpenBLAS takes its threads from OPENBLAS_NUM_THREADS.
+// is Eigen's simplicial LDL^T below cholmod_threshold() unknowns and CHOLMOD's supernodal LL^T
+// with METIS on the graph of the vertices above; OpenBLAS takes its threads from
+// OPENBLAS_NUM_THREADS.
 //
 //   build/benchmark/Distortion_optimization/bench_sparse_solvers [mesh.off ...]
 //   (default: lion-head.off of libcgal-demo and its linear subdivisions, 1 to 3 levels:
 //   16.7K, 67K, 267K and 1.07M triangles)
+//
+// bench_sparse_solvers_as_the_tool, built from the same file, measures in the command-line tool's
+// setting (BENCH_AS_THE_TOOL): CHOLMOD's OpenMP regions on the calling thread (the tool's
+// openmp_regions.cpp, linked in) and freed blocks kept in the heap (mallopt), which is what sets
+// the tool's own threshold (set_cholmod_threshold()).
 
 #include <CGAL/Distortion_optimization/internal/block_amd_ordering.h>
 #include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
@@ -20,6 +26,10 @@
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
 #include <Eigen/CholmodSupport>
+#endif
+
+#ifdef BENCH_AS_THE_TOOL
+#include <malloc.h>
 #endif
 
 #include <algorithm>
@@ -162,6 +172,10 @@ void measure(const Candidate& candidate, const Matrix& H)
 
 int main(int argc, char** argv)
 {
+#ifdef BENCH_AS_THE_TOOL
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) files.push_back(argv[i]);
   const bool subdivisions = files.empty();
@@ -199,7 +213,7 @@ int main(int argc, char** argv)
         measure(cholmod_candidate(name, solver, ordering), H);
       }
 #endif
-      for(int cholmod_from : {DOI::Sparse_cholesky<2>::default_cholmod_from, 0}) {
+      for(std::ptrdiff_t cholmod_from : {DOI::Sparse_cholesky<2>::default_cholmod_from(), std::ptrdiff_t(0)}) {
         DOI::Sparse_cholesky<2> solver(cholmod_from);
         measure({cholmod_from == 0 ? "the package's, CHOLMOD at any size" : "the package's, by size (the default)",
                  [&](const Matrix& A) { solver.analyze(A); }, [&](const Matrix& A) { return solver.factorize(A); },

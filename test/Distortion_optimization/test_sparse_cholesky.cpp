@@ -73,7 +73,7 @@ double relative_residual(const Sparse& A, const Eigen::MatrixXd& x, const Eigen:
 
 // With CHOLMOD, from how many unknowns it is used: the tests below run both factorizations on one
 // mesh by asking for CHOLMOD from 0 unknowns.
-const int cholmod_always = 0, cholmod_default = DOI::Sparse_cholesky<2>::default_cholmod_from;
+const std::ptrdiff_t cholmod_always = 0, cholmod_default = DOI::Sparse_cholesky<2>::default_cholmod_from();
 
 TEST(SparseCholesky, BackendIsTheOneCMakeChose)
 {
@@ -89,6 +89,32 @@ TEST(SparseCholesky, BackendIsTheOneCMakeChose)
   // lion-head's 16.6K unknowns are fewer than CHOLMOD's threshold.
   EXPECT_LT(A.rows(), cholmod_default);
   EXPECT_FALSE(by_size.uses_cholmod());
+}
+
+TEST(SparseCholesky, TheProgramsThresholdChoosesTheBackend)
+{
+  // set_cholmod_threshold() is read as a solver is set up: CHOLMOD from that many unknowns on.
+  namespace DO = CGAL::Distortion_optimization;
+  const Sparse A = lion_head_system(2);
+  const std::size_t unknowns = static_cast<std::size_t>(A.rows());
+  EXPECT_EQ(DO::cholmod_threshold(), 32768u);   // the library's default
+  const std::size_t before = DO::set_cholmod_threshold(unknowns);
+  EXPECT_EQ(before, 32768u);
+  DOI::Sparse_cholesky<2> at_threshold;
+  DO::set_cholmod_threshold(unknowns + 1);
+  DOI::Sparse_cholesky<2> below_threshold;
+  EXPECT_EQ(DO::set_cholmod_threshold(before), unknowns + 1);
+  ASSERT_TRUE(at_threshold.factorize(A));
+  ASSERT_TRUE(below_threshold.factorize(A));
+#ifdef DISTORTION_OPTIMIZATION_EXPECT_CHOLMOD
+  EXPECT_TRUE(at_threshold.uses_cholmod());
+#else
+  EXPECT_FALSE(at_threshold.uses_cholmod());
+#endif
+  EXPECT_FALSE(below_threshold.uses_cholmod());
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(A.rows());
+  EXPECT_LT(relative_residual(A, at_threshold.solve(b), b), 1e-10);
+  EXPECT_LT(relative_residual(A, below_threshold.solve(b), b), 1e-10);
 }
 
 TEST(SparseCholesky, SolvesNewtonAndLaplacianSystemsOfARealMesh)

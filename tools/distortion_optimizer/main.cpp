@@ -11,6 +11,7 @@
 #include "staged_output.h"
 #include "tool.h"
 
+#include <CGAL/Distortion_optimization/sparse_solver.h>
 #include <CGAL/exceptions.h>
 
 #include <dlfcn.h>
@@ -76,6 +77,17 @@ void keep_freed_memory()
 #endif
 }
 
+// With CHOLMOD's OpenMP regions on the calling thread (openmp_regions.cpp) and its freed
+// workspaces kept (above), its supernodal factorization is faster than Eigen's simplicial one
+// from a few thousand unknowns on, not only from the library's default of 32,768, which suits a
+// program that runs CHOLMOD as it comes (figures: the manual's section on the sparse solver).
+void factor_systems_of_a_few_thousand_unknowns_with_cholmod()
+{
+#ifdef __GLIBC__
+  DO::set_cholmod_threshold(4096);
+#endif
+}
+
 // All outputs or none: each output gets a temporary name beside it before any input is read (so a
 // folder that cannot be written fails first), the run writes there, and the files are renamed
 // only when every one was written (after the outputs into devices, whose writes may still fail).
@@ -99,6 +111,7 @@ int run(const Command_line& c)
   check_threads(c.threads);
   keep_blas_on_one_thread();
   keep_freed_memory();
+  factor_systems_of_a_few_thousand_unknowns_with_cholmod();
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   int status = 0;
   try {

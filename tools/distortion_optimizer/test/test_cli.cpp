@@ -1938,7 +1938,7 @@ TEST(CommandLine, ASubdivisionThatCannotFitIsRefusedAtOnce)
 }
 
 // A surface whose Newton systems take the sparse solver's CHOLMOD path (lion-head subdivided once:
-// more unknowns than Sparse_cholesky's default_cholmod_from), with the tool's own allocator
+// more unknowns than the library's default cholmod_threshold()), with the tool's own allocator
 // settings and OpenMP regions (main.cpp, openmp_regions.cpp): Newton's few iterations, and an
 // energy below the coarse mesh's optimum, which the refined problem contains (a map of the coarse
 // mesh is one of the fine mesh with the same energy: --subdivide says so above).

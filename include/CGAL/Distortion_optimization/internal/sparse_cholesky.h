@@ -17,6 +17,7 @@
 #include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/internal/block_amd_ordering.h>
+#include <CGAL/Distortion_optimization/sparse_solver.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -24,6 +25,9 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -124,14 +128,19 @@ private:
 // of `block` (a vertex's coordinates), kept together by the fill-reducing ordering. Reads the lower
 // triangle. Usable as a preconditioner (solve). Below `cholmod_from` unknowns Eigen's simplicial
 // LDL^T is used even with CHOLMOD: a supernodal factorization's overhead outweighs its dense
-// blocks there (bench_sparse_solvers; the figures are in the manual's section on the sparse solver).
+// blocks there, unless the program removed that overhead (set_cholmod_threshold(); the figures
+// are in the manual's section on the sparse solver).
 template <int block>
 class Sparse_cholesky
 {
 public:
-  static constexpr int default_cholmod_from = 32768;
+  // The program's setting, cholmod_threshold().
+  static std::ptrdiff_t default_cholmod_from()
+  {
+    return static_cast<std::ptrdiff_t>(std::min<std::size_t>(cholmod_threshold(), PTRDIFF_MAX));
+  }
 
-  explicit Sparse_cholesky(int cholmod_from = default_cholmod_from,
+  explicit Sparse_cholesky(std::ptrdiff_t cholmod_from = default_cholmod_from(),
                            Fill_reducing_order fill = Fill_reducing_order::NESTED_DISSECTION)
     : cholmod_from_(cholmod_from), fill_(fill)
   {}
@@ -228,7 +237,7 @@ public:
 
 private:
   using Simplicial = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_AMD_ordering<block>>;
-  int cholmod_from_;
+  std::ptrdiff_t cholmod_from_;
   Fill_reducing_order fill_;
   std::unique_ptr<Simplicial> simplicial_;
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD

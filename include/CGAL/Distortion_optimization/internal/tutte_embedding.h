@@ -56,7 +56,7 @@ inline bool barycentric_positions(const std::vector<std::vector<std::uint32_t>>&
   Eigen::SparseMatrix<double> L(size, size);
   L.setFromTriplets(entries.begin(), entries.end());
   // One solve: the minimum degree's order, which costs less than nested dissection saves.
-  Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from, Fill_reducing_order::MINIMUM_DEGREE);
+  Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from(), Fill_reducing_order::MINIMUM_DEGREE);
   if(!factorization.factorize(L)) return false;
   const Eigen::MatrixXd X = factorization.solve(rhs);
   if(!X.allFinite()) return false;

@@ -96,7 +96,7 @@ std::vector<typename Mesh::Vertex_index> place_cones(const Mesh& m, const std::v
   }
   Eigen::SparseMatrix<double> L(size, size);
   L.setFromTriplets(entries.begin(), entries.end());
-  Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from, Fill_reducing_order::MINIMUM_DEGREE);
+  Sparse_cholesky<1> factorization(Sparse_cholesky<1>::default_cholmod_from(), Fill_reducing_order::MINIMUM_DEGREE);
   if(!factorization.factorize(L)) return cones;
   const Eigen::VectorXd u0 = factorization.solve(rhs);
   Eigen::VectorXd u = u0;
