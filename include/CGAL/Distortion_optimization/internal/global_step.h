@@ -49,10 +49,11 @@ class Global_step
 
 public:
   // With `newton`, steps take the projected Newton direction where the measure has a Hessian (the
-  // reweighted Laplacian's otherwise, and where a Newton solve fails).
-  Global_step(State& state, bool newton)
+  // reweighted Laplacian's otherwise, and where a Newton solve fails); `iterations`: the most the
+  // run takes.
+  Global_step(State& state, bool newton, std::size_t iterations)
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()), laplacian_(state, system_),
-      newton_(state, system_, newton) {}
+      newton_(state, system_, newton, iterations) {}
 
   // Whether the steps solve Newton's system (else the reweighted Laplacian's).
   bool is_newton() const { return newton_.taken(); }

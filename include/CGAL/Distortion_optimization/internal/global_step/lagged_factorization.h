@@ -16,6 +16,7 @@
 #include <CGAL/Distortion_optimization/internal/laplacian_system.h>
 #include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
 
+#include <cstddef>
 #include <limits>
 
 namespace CGAL {
@@ -26,8 +27,12 @@ template <int n>
 class Lagged_factorization
 {
 public:
-  // `system`: the global steps' (H is its hessian()).
-  explicit Lagged_factorization(const Laplacian_system<n>& system) : system_(system) {}
+  // `system`: the global steps' (H is its hessian()); `iterations`: the most the run takes.
+  Lagged_factorization(const Laplacian_system<n>& system, std::size_t iterations)
+    : system_(system),
+      factorization_(Sparse_cholesky<n>::default_cholmod_from(),
+                     iterations > few_iterations ? Fill_reducing_order::NESTED_DISSECTION : Fill_reducing_order::MINIMUM_DEGREE)
+  {}
 
   // The solution of H x = b (`solution`, 0 on entry); NaN where the factorization fails.
   void solve(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& b, Eigen::MatrixXd& solution)
@@ -51,6 +56,7 @@ public:
   }
 
 private:
+  static constexpr std::size_t few_iterations = 4;
   const Laplacian_system<n>& system_;
   Sparse_cholesky<n> factorization_;
   Backoff lagged_;   // the solves preconditioned by the last factorization

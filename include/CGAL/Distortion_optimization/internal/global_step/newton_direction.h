@@ -55,14 +55,15 @@ private:
 
 public:
   // `system`: the global steps' (its unknowns the free vertices). With `wanted`, the global steps
-  // are to take Newton's direction where the measure, or its model, has a Hessian.
-  Newton_direction(State& state, Laplacian_system<n>& system, bool wanted)
+  // are to take Newton's direction where the measure, or its model, has a Hessian; `iterations`:
+  // the most the run takes.
+  Newton_direction(State& state, Laplacian_system<n>& system, bool wanted, std::size_t iterations)
     : state_(state), p_(state.problem()), system_(system),
       slides_(std::any_of(p_.is_sliding.begin(), p_.is_sliding.end(), [](unsigned char s) { return s != 0; })),
       model_(Newton_model<Measure>::of(state.measure())),
       on_(wanted && measures_internal::has_hessian<n>(model()) && (!model_ || every_vertex_moves())),
       proxy_(on_ && model_ && slides_),
-      solver_(make_solver(system, on_ && model_ && !slides_)) {}
+      solver_(make_solver(system, on_ && model_ && !slides_, iterations)) {}
 
   // Whether the global steps take it (else the reweighted Laplacian's), and whether it is a
   // smooth model's rather than the measure's.
@@ -140,9 +141,9 @@ public:
   }
 
 private:
-  static Solver make_solver(Laplacian_system<n>& system, bool may_take_laplacian)
+  static Solver make_solver(Laplacian_system<n>& system, bool may_take_laplacian, std::size_t iterations)
   {
-    if constexpr(n == 2) return Solver(system);
+    if constexpr(n == 2) return Solver(system, iterations);
     else return Solver(system, may_take_laplacian);
   }
 
