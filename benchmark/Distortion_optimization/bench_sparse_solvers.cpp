@@ -13,9 +13,9 @@
 //   16.7K, 67K, 267K and 1.07M triangles)
 //
 // bench_sparse_solvers_as_the_tool, built from the same file, measures in the command-line tool's
-// setting (BENCH_AS_THE_TOOL): CHOLMOD's OpenMP regions on the calling thread (the tool's
-// openmp_regions.cpp, linked in) and freed blocks kept in the heap (mallopt), which is what sets
-// the tool's own threshold (set_cholmod_threshold()).
+// setting (BENCH_AS_THE_TOOL; the tool's solver_runtime.cpp, linked in): CHOLMOD's OpenMP regions
+// on the calling thread, freed blocks kept in the heap, the BLAS on one thread, and the tool's
+// threshold (set_cholmod_threshold()), which these figures chose.
 
 #include <CGAL/Distortion_optimization/internal/block_amd_ordering.h>
 #include <CGAL/Distortion_optimization/internal/sparse_cholesky.h>
@@ -29,7 +29,7 @@
 #endif
 
 #ifdef BENCH_AS_THE_TOOL
-#include <malloc.h>
+#include "solver_runtime.h"
 #endif
 
 #include <algorithm>
@@ -173,8 +173,7 @@ void measure(const Candidate& candidate, const Matrix& H)
 int main(int argc, char** argv)
 {
 #ifdef BENCH_AS_THE_TOOL
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  distortion_optimizer::set_up_sparse_solvers();
 #endif
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) files.push_back(argv[i]);

@@ -8,16 +8,11 @@
 // tetrahedral maps in tetrahedral_maps.cpp (with the volume mode's meshing and carried surface in
 // volume_mode.cpp), and the report and pictures are written by outputs.cpp.
 
+#include "solver_runtime.h"
 #include "staged_output.h"
 #include "tool.h"
 
-#include <CGAL/Distortion_optimization/sparse_solver.h>
 #include <CGAL/exceptions.h>
-
-#include <dlfcn.h>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 
 #include <future>
 #include <iostream>
@@ -53,41 +48,6 @@ void check_threads(std::size_t n)
                             std::to_string(threads.size() + 1) + " under this machine's limits): give fewer");
 }
 
-// The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
-// them spin while they wait. A triangle mesh's supernodes are small: more threads did not make its
-// factorizations faster, and the spinning threads took a core from the tool's own (TBB's)
-// parallel steps. The tool keeps the BLAS on one thread whatever --threads says (CHOLMOD's own
-// OpenMP loops run on the calling thread: openmp_regions.cpp). Looked up at run time: a build
-// without CHOLMOD, or with another BLAS, has no such function.
-void keep_blas_on_one_thread()
-{
-  using Setter = void (*)(int);
-  if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
-}
-
-// Each numeric factorization of CHOLMOD allocates and frees its workspaces (the permuted matrix,
-// the update matrices): glibc's malloc maps blocks that large afresh and unmaps them when freed,
-// so that every factorization paid a page fault per page it touched. The tool keeps freed blocks
-// in the heap for the next one instead (figures: the manual's section on the sparse solver).
-void keep_freed_memory()
-{
-#ifdef __GLIBC__
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
-}
-
-// With CHOLMOD's OpenMP regions on the calling thread (openmp_regions.cpp) and its freed
-// workspaces kept (above), its supernodal factorization is faster than Eigen's simplicial one
-// from a few thousand unknowns on, not only from the library's default of 32,768, which suits a
-// program that runs CHOLMOD as it comes (figures: the manual's section on the sparse solver).
-void factor_systems_of_a_few_thousand_unknowns_with_cholmod()
-{
-#ifdef __GLIBC__
-  DO::set_cholmod_threshold(4096);
-#endif
-}
-
 // All outputs or none: each output gets a temporary name beside it before any input is read (so a
 // folder that cannot be written fails first), the run writes there, and the files are renamed
 // only when every one was written (after the outputs into devices, whose writes may still fail).
@@ -109,9 +69,7 @@ int run(const Command_line& c)
       staged.*outputs[i] = files[i]->path();
     }
   check_threads(c.threads);
-  keep_blas_on_one_thread();
-  keep_freed_memory();
-  factor_systems_of_a_few_thousand_unknowns_with_cholmod();
+  set_up_sparse_solvers();
   const bool tetrahedra = tetrahedral_file(c.source) || c.volume_mode();
   int status = 0;
   try {

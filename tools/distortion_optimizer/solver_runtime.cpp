@@ -1,6 +1,66 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
+// How the tool runs its sparse solver's libraries (solver_runtime.h); bench_sparse_solvers_as_the_tool
+// links this file to measure them the same way.
+
+#include "solver_runtime.h"
+
+#include <CGAL/Distortion_optimization/sparse_solver.h>
+
+#include <dlfcn.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
+namespace distortion_optimizer {
+
+namespace {
+
+// The BLAS of CHOLMOD's factorizations (OpenBLAS) starts a thread per core when loaded and lets
+// them spin while they wait. A triangle mesh's supernodes are small: more threads did not make its
+// factorizations faster, and the spinning threads took a core from the tool's own (TBB's)
+// parallel steps. Looked up at run time: a build without CHOLMOD, or with another BLAS, has no
+// such function.
+void keep_blas_on_one_thread()
+{
+  using Setter = void (*)(int);
+  if(const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+}
+
+// Each numeric factorization of CHOLMOD allocates and frees its workspaces (the permuted matrix,
+// the update matrices): glibc's malloc maps blocks that large afresh and unmaps them when freed,
+// so that every factorization paid a page fault per page it touched.
+void keep_freed_memory()
+{
+#ifdef __GLIBC__
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
+}
+
+// With CHOLMOD's OpenMP regions on the calling thread (below) and its freed workspaces kept, its
+// supernodal factorization is faster than Eigen's simplicial one from a few thousand unknowns on,
+// not only from the library's default of 32,768, which suits a program that runs CHOLMOD as it
+// comes.
+void factor_systems_of_a_few_thousand_unknowns_with_cholmod()
+{
+#ifdef __GLIBC__
+  CGAL::Distortion_optimization::set_cholmod_threshold(4096);
+#endif
+}
+
+} // namespace
+
+void set_up_sparse_solvers()
+{
+  keep_blas_on_one_thread();
+  keep_freed_memory();
+  factor_systems_of_a_few_thousand_unknowns_with_cholmod();
+}
+
+} // namespace distortion_optimizer
+
 // CHOLMOD's OpenMP regions, run by the calling thread. The supernodal factorization of CHOLMOD 3
 // (SuiteSparse 5, as Debian packages it) opens a parallel region for each supernode and each
 // update it receives, with an `if` clause that keeps all but the largest on one thread. GCC's
@@ -15,8 +75,6 @@
 // A library user on one thread can do the same in their program; the library does not.
 
 #ifdef CGAL_DISTORTION_OPTIMIZATION_LINKED_WITH_CHOLMOD
-
-#include <dlfcn.h>
 
 namespace {
 

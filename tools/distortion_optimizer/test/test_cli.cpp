@@ -1939,7 +1939,7 @@ TEST(CommandLine, ASubdivisionThatCannotFitIsRefusedAtOnce)
 
 // A surface whose Newton systems take the sparse solver's CHOLMOD path (lion-head subdivided once:
 // more unknowns than the library's default cholmod_threshold()), with the tool's own allocator
-// settings and OpenMP regions (main.cpp, openmp_regions.cpp): Newton's few iterations, and an
+// settings and OpenMP regions (solver_runtime.cpp): Newton's few iterations, and an
 // energy below the coarse mesh's optimum, which the refined problem contains (a map of the coarse
 // mesh is one of the fine mesh with the same energy: --subdivide says so above).
 TEST(CommandLine, ASurfaceForTheSupernodalSolverConvergesAsNewtonDoes)
@@ -1960,7 +1960,7 @@ TEST(CommandLine, ASurfaceForTheSupernodalSolverConvergesAsNewtonDoes)
   EXPECT_GT(json_value(fine_json, "final_energy"), 0.99 * coarse_energy);
 }
 
-// CHOLMOD's OpenMP regions bind to the tool's own GOMP_parallel (openmp_regions.cpp), which the
+// CHOLMOD's OpenMP regions bind to the tool's own GOMP_parallel (solver_runtime.cpp), which the
 // executable must define and export for the dynamic linker to prefer it to libgomp's.
 TEST(CommandLine, TheToolRunsCholmodsOpenMPRegionsItself)
 {
