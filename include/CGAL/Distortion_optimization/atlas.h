@@ -87,9 +87,11 @@ a chart that fills its bounding rectangle poorly is split (`min_chart_fill`), an
 everywhere), turned but never mirrored, `atlas_gutter` apart.
 
 The seams: the loops of a tree-cotree decomposition open the handles (Erickson and Whittlesey's
-short loops), and shortest paths join the seams to cone vertices placed where a conformal
-flattening would stretch the piece most (Ben-Chen, Gotsman and Bunin 2008); a piece of genus 0
-with a border and a flat enough shape needs none. `tm` is never modified: the seams only split
+short loops), shortest paths join to the outer border each hole whose border turns on the
+surface more than 5 degrees unlike a hole in the plane (by \f$ -2\pi \f$), and shortest paths
+join the seams to cone vertices placed where a conformal flattening would stretch the piece most
+(Ben-Chen, Gotsman and Bunin 2008); a piece of genus 0 with a border and a flat enough shape
+needs none. `tm` is never modified: the seams only split
 the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` is the UV of
 `target(h)` in `face(h)`, for every halfedge `h` of a face.
 

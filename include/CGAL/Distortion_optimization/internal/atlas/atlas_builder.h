@@ -43,6 +43,7 @@ namespace internal {
 struct Atlas_options
 {
   double max_log_scale = 1;           // the cones' bound on the conformal flattening's log scale
+  double hole_turning = M_PI / 36;    // a hole whose loop turns further from -2 pi gets a seam (radians)
   double max_distortion = 0;          // a piece's mean distortion above it cuts it into charts (0: no bound)
   double gutter = 0.01;               // between charts, a fraction of the square's side
   double min_fill = 0.6;              // a chart filling less of its bounding rectangle is split
@@ -88,6 +89,7 @@ public:
       Piece& piece = pieces_[k];
       piece.seam = handle_seams(piece.mesh);
       add_user_seams(piece);
+      add_hole_seams(piece.mesh, options_.hole_turning, piece.seam);
       add_cone_seams(piece, options_.max_log_scale);
       cut_open(piece);
       flatten(piece);

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Distortion_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// The cone vertices of a piece: where its seams must reach for the piece to flatten with little
-// distortion.
+// The cone vertices and the holes of a piece that its seams must reach for the piece to flatten
+// with little distortion.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_CONES_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_ATLAS_CONES_H
@@ -50,6 +50,72 @@ void cotangent_weights_and_defects(const Mesh& m, std::vector<double>& weight, s
     }
   }
   for(double& w : weight) w = (std::max)(w, 1e-4);
+}
+
+// Seams that open the holes a flattening cannot keep as holes. A hole's border turns by -2 pi in
+// the plane; one whose loop turns on the surface (the sum of pi less the angles at its vertices)
+// by more than `tolerance` (radians) less or more would have the flattening make the difference
+// up by scaling the chart about it, as about a cone, and the seams of the cones cannot help (the
+// conformal flattening below keeps the borders' lengths). A shortest path from each such loop to
+// the piece's outer border (the loop that turns most: +2 pi in the plane), or to the seams and
+// loops already joined to it, frees its turning. The loops furthest off go first.
+template <class Mesh>
+void add_hole_seams(const Mesh& m, double tolerance, std::vector<bool>& seam)
+{
+  using Vertex = typename Mesh::Vertex_index;
+  std::vector<double> weight, defect;
+  cotangent_weights_and_defects(m, weight, defect);
+  std::vector<std::vector<Vertex>> loops;
+  std::vector<double> turning;
+  std::vector<bool> visited(m.number_of_halfedges(), false);
+  for(auto h : m.halfedges()) {
+    if(!m.is_border(h) || visited[std::size_t(h)]) continue;
+    loops.emplace_back();
+    turning.push_back(0);
+    for(auto g : CGAL::halfedges_around_face(h, m)) {
+      visited[std::size_t(g)] = true;
+      loops.back().push_back(m.target(g));
+      turning.back() += defect[std::size_t(m.target(g))];
+    }
+  }
+  if(loops.size() < 2) return;
+  const std::size_t outer = std::size_t(std::max_element(turning.begin(), turning.end()) - turning.begin());
+  // Joined: the outer loop, and the seams and loops the seams so far (a user's) join to it.
+  std::vector<std::size_t> loop_of(m.number_of_vertices(), loops.size());
+  for(std::size_t i = 0; i < loops.size(); ++i)
+    for(Vertex v : loops[i]) loop_of[std::size_t(v)] = i;
+  std::vector<bool> joined(m.number_of_vertices(), false), loop_joined(loops.size(), false);
+  std::vector<Vertex> reached;
+  const auto join_loop = [&](std::size_t i) {
+    loop_joined[i] = true;
+    for(Vertex v : loops[i])
+      if(!joined[std::size_t(v)]) joined[std::size_t(v)] = true, reached.push_back(v);
+  };
+  join_loop(outer);
+  while(!reached.empty()) {
+    const Vertex v = reached.back();
+    reached.pop_back();
+    const std::size_t i = loop_of[std::size_t(v)];
+    if(i < loops.size() && !loop_joined[i]) join_loop(i);
+    for(auto h : CGAL::halfedges_around_source(v, m))
+      if(seam[std::size_t(m.edge(h))] && !joined[std::size_t(m.target(h))])
+        joined[std::size_t(m.target(h))] = true, reached.push_back(m.target(h));
+  }
+  std::vector<std::size_t> off;
+  for(std::size_t i = 0; i < loops.size(); ++i)
+    if(!loop_joined[i] && std::abs(turning[i] + 2 * M_PI) > tolerance) off.push_back(i);
+  std::sort(off.begin(), off.end(),
+            [&](std::size_t a, std::size_t b) { return std::abs(turning[a] + 2 * M_PI) > std::abs(turning[b] + 2 * M_PI); });
+  std::vector<double> distance;
+  std::vector<typename Mesh::Halfedge_index> arrival;
+  for(std::size_t i : off) {
+    Vertex v = shortest_paths(m, loops[i], distance, arrival, [&](Vertex w) { return bool(joined[std::size_t(w)]); });
+    for(; v != Mesh::null_vertex() && arrival[std::size_t(v)] != Mesh::null_halfedge(); v = m.source(arrival[std::size_t(v)])) {
+      seam[std::size_t(m.edge(arrival[std::size_t(v)]))] = true;
+      joined[std::size_t(v)] = true;
+    }
+    for(Vertex w : loops[i]) joined[std::size_t(w)] = true;
+  }
 }
 
 // Cone vertices, chosen as in Ben-Chen, Gotsman and Bunin, "Conformal flattening by curvature
