@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -58,7 +60,7 @@ void cotangent_weights_and_defects(const Mesh& m, std::vector<double>& weight, s
 // up by scaling the chart about it, as about a cone, and the seams of the cones cannot help (the
 // conformal flattening below keeps the borders' lengths). A shortest path from each such loop to
 // the piece's outer border (the loop that turns most: +2 pi in the plane), or to the seams and
-// loops already joined to it, frees its turning. The loops furthest off go first.
+// loops already joined to it, frees its turning.
 template <class Mesh>
 void add_hole_seams(const Mesh& m, double tolerance, std::vector<bool>& seam)
 {
@@ -101,20 +103,40 @@ void add_hole_seams(const Mesh& m, double tolerance, std::vector<bool>& seam)
       if(seam[std::size_t(m.edge(h))] && !joined[std::size_t(m.target(h))])
         joined[std::size_t(m.target(h))] = true, reached.push_back(m.target(h));
   }
-  std::vector<std::size_t> off;
-  for(std::size_t i = 0; i < loops.size(); ++i)
-    if(!loop_joined[i] && std::abs(turning[i] + 2 * M_PI) > tolerance) off.push_back(i);
-  std::sort(off.begin(), off.end(),
-            [&](std::size_t a, std::size_t b) { return std::abs(turning[a] + 2 * M_PI) > std::abs(turning[b] + 2 * M_PI); });
-  std::vector<double> distance;
-  std::vector<typename Mesh::Halfedge_index> arrival;
-  for(std::size_t i : off) {
-    Vertex v = shortest_paths(m, loops[i], distance, arrival, [&](Vertex w) { return bool(joined[std::size_t(w)]); });
-    for(; v != Mesh::null_vertex() && arrival[std::size_t(v)] != Mesh::null_halfedge(); v = m.source(arrival[std::size_t(v)])) {
-      seam[std::size_t(m.edge(arrival[std::size_t(v)]))] = true;
-      joined[std::size_t(v)] = true;
+  std::vector<bool> off(loops.size(), false);
+  for(std::size_t i = 0; i < loops.size(); ++i) off[i] = !loop_joined[i] && std::abs(turning[i] + 2 * M_PI) > tolerance;
+  // One search grown from the joined vertices, however many the loops: the first vertex of a loop
+  // that is off to be reached joins that loop by the path it came by, and the path and the loop
+  // then search on at distance 0 (so each loop is joined by a shortest path to what was joined
+  // when the search reached it, the nearest first).
+  std::vector<double> distance(m.number_of_vertices(), std::numeric_limits<double>::infinity());
+  std::vector<typename Mesh::Halfedge_index> arrival(m.number_of_vertices(), Mesh::null_halfedge());
+  Path_queue queue;
+  const auto start_from = [&](Vertex v) {
+    distance[std::size_t(v)] = 0;
+    arrival[std::size_t(v)] = Mesh::null_halfedge();
+    queue.emplace(0., std::uint32_t(v));
+  };
+  for(auto v : m.vertices())
+    if(joined[std::size_t(v)]) start_from(v);
+  std::vector<Vertex> path;
+  while(!queue.empty()) {
+    const auto [d, k] = queue.top();
+    queue.pop();
+    if(d > distance[k]) continue;
+    const Vertex v(k);
+    if(loop_of[k] < loops.size() && off[loop_of[k]]) {
+      off[loop_of[k]] = false;
+      path.clear();
+      for(Vertex w = v; arrival[std::size_t(w)] != Mesh::null_halfedge(); w = m.source(arrival[std::size_t(w)])) {
+        seam[std::size_t(m.edge(arrival[std::size_t(w)]))] = true;
+        path.push_back(w);
+      }
+      for(Vertex w : path) start_from(w);
+      for(Vertex w : loops[loop_of[k]]) start_from(w);
+      continue;
     }
-    for(Vertex w : loops[i]) joined[std::size_t(w)] = true;
+    relax_edges_from(m, v, d, distance, arrival, queue);
   }
 }
 

@@ -33,6 +33,26 @@ double edge_length(const Mesh& m, typename Mesh::Edge_index e)
   return std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)))));
 }
 
+// Dijkstra's queue of (distance, vertex) entries, nearest first, and one step of the search: the
+// edges from `v`, reached at distance `d`, relaxed.
+using Path_queue = std::priority_queue<std::pair<double, std::uint32_t>, std::vector<std::pair<double, std::uint32_t>>,
+                                       std::greater<std::pair<double, std::uint32_t>>>;
+
+template <class Mesh>
+void relax_edges_from(const Mesh& m, typename Mesh::Vertex_index v, double d, std::vector<double>& distance,
+                      std::vector<typename Mesh::Halfedge_index>& arrival, Path_queue& queue)
+{
+  for(auto h : CGAL::halfedges_around_source(v, m)) {
+    const std::size_t w = std::size_t(m.target(h));
+    const double through = d + edge_length(m, m.edge(h));
+    if(through < distance[w]) {
+      distance[w] = through;
+      arrival[w] = h;
+      queue.emplace(through, std::uint32_t(w));
+    }
+  }
+}
+
 // Dijkstra's shortest paths along the edges from the vertices `sources`: each vertex's distance,
 // and the halfedge by which its path arrives (null at the sources and where nothing reaches).
 // With `goal`, the search ends at the first vertex reached for which it holds, and returns it
@@ -42,10 +62,9 @@ typename Mesh::Vertex_index shortest_paths(const Mesh& m, const std::vector<type
                                            std::vector<double>& distance, std::vector<typename Mesh::Halfedge_index>& arrival,
                                            const std::function<bool(typename Mesh::Vertex_index)>& goal = {})
 {
-  using Entry = std::pair<double, std::uint32_t>;
   distance.assign(m.number_of_vertices(), std::numeric_limits<double>::infinity());
   arrival.assign(m.number_of_vertices(), Mesh::null_halfedge());
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  Path_queue queue;
   for(auto s : sources) {
     distance[std::size_t(s)] = 0;
     queue.emplace(0., std::uint32_t(s));
@@ -56,15 +75,7 @@ typename Mesh::Vertex_index shortest_paths(const Mesh& m, const std::vector<type
     const typename Mesh::Vertex_index v(i);
     if(d > distance[i] || m.halfedge(v) == Mesh::null_halfedge()) continue;
     if(goal && goal(v)) return v;
-    for(auto h : CGAL::halfedges_around_source(v, m)) {
-      const std::size_t w = std::size_t(m.target(h));
-      const double through = d + edge_length(m, m.edge(h));
-      if(through < distance[w]) {
-        distance[w] = through;
-        arrival[w] = h;
-        queue.emplace(through, std::uint32_t(w));
-      }
-    }
+    relax_edges_from(m, v, d, distance, arrival, queue);
   }
   return Mesh::null_vertex();
 }
