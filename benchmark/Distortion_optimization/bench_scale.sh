@@ -41,7 +41,7 @@ for border in fixed free; do
       cells=$(field "$report" cells)
       seconds=$(field "$report" seconds)
       sweeps=$(field "$report" sweeps)
-      per=$(awk -v s="$seconds" -v k="$sweeps" 'BEGIN { print k > 0 ? s / k : 0 }')
+      per=$(awk -v s="$seconds" -v k="$sweeps" 'BEGIN { print (k > 0 ? s / k : 0) }')
       printf '%-6s %-6s %9d %7.2f %9.2f %11.4f %6d %10s %13.8g %8.0f\n' "$border" "$threads" "$cells" "$wall" "$seconds" \
         "$per" "$sweeps" "" "$(field "$report" final_energy)" "$(awk -v k="$rss" 'BEGIN { print k / 1024 }')"
       fit[$border,$threads]+="$cells $per
