@@ -6,7 +6,7 @@
 // the factor's nonzeros and the relative residual. The package's own (internal/sparse_cholesky.h)
 // is Eigen's simplicial LDL^T below cholmod_threshold() unknowns and CHOLMOD's supernodal LL^T
 // with METIS on the graph of the vertices above; OpenBLAS takes its threads from
-// OPENBLAS_NUM_THREADS.
+// OPENBLAS_NUM_THREADS (one thread in the tool's setting, below).
 //
 //   build/benchmark/Distortion_optimization/bench_sparse_solvers [mesh.off ...]
 //   (default: lion-head.off of libcgal-demo and its linear subdivisions, 1 to 3 levels:
