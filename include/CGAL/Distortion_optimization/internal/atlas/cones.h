@@ -60,13 +60,11 @@ void cotangent_weights_and_defects(const Mesh& m, std::vector<double>& weight, s
 // up by scaling the chart about it, as about a cone, and the seams of the cones cannot help (the
 // conformal flattening below keeps the borders' lengths). A shortest path from each such loop to
 // the piece's outer border (the loop that turns most: +2 pi in the plane), or to the seams and
-// loops already joined to it, frees its turning.
+// loops already joined to it, frees its turning. `defect`: cotangent_weights_and_defects()'s.
 template <class Mesh>
-void add_hole_seams(const Mesh& m, double tolerance, std::vector<bool>& seam)
+void add_hole_seams(const Mesh& m, const std::vector<double>& defect, double tolerance, std::vector<bool>& seam)
 {
   using Vertex = typename Mesh::Vertex_index;
-  std::vector<double> weight, defect;
-  cotangent_weights_and_defects(m, weight, defect);
   std::vector<std::vector<Vertex>> loops;
   std::vector<double> turning;
   std::vector<bool> visited(m.number_of_halfedges(), false);
@@ -146,14 +144,12 @@ void add_hole_seams(const Mesh& m, double tolerance, std::vector<bool>& seam)
 // elsewhere, L the cotangent Laplacian and K the angle defects) is largest in magnitude where the
 // flattening would stretch or shrink the piece most; that vertex becomes the next cone, until
 // |u| <= `max_log_scale` everywhere or `max_cones` are placed. A closed piece without seams gets
-// two cones at least: a cut needs both ends.
+// two cones at least: a cut needs both ends. `weight`, `defect`: cotangent_weights_and_defects()'s.
 template <class Mesh>
-std::vector<typename Mesh::Vertex_index> place_cones(const Mesh& m, const std::vector<bool>& seam, double max_log_scale,
-                                                     std::size_t max_cones)
+std::vector<typename Mesh::Vertex_index> place_cones(const Mesh& m, const std::vector<double>& weight, const std::vector<double>& defect,
+                                                     const std::vector<bool>& seam, double max_log_scale, std::size_t max_cones)
 {
   using Vertex = typename Mesh::Vertex_index;
-  std::vector<double> weight, defect;
-  cotangent_weights_and_defects(m, weight, defect);
   std::vector<bool> fixed = vertices_on_cuts(m, seam);
   std::vector<Vertex> cones;
   if(std::find(fixed.begin(), fixed.end(), true) == fixed.end()) {
