@@ -60,6 +60,7 @@ extract "$DOC_DIR/data.tar.gz" \
   data/meshes/pig.stl \
   data/meshes/eight.off \
   data/meshes/elephant.off \
+  data/meshes/elephant-with-holes.off \
   data/meshes/knot1.off \
   data/meshes/sphere.off \
   data/meshes/sphere.ply \

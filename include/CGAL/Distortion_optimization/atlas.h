@@ -106,7 +106,7 @@ the UVs, which are written per corner, as CGAL's `Seam_mesh` has them: `uv[h]` i
   \cgalParamNBegin{cell_distortion_map} \cgalParamDescription{receives the measure's value on each face} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{edge_is_seam_map} \cgalParamDescription{the user's seams (edges flagged true; a border edge is no seam), then on return every seam} \cgalParamDefault{no seam given, none returned} \cgalParamNEnd
   \cgalParamNBegin{atlas_gutter} \cgalParamDescription{space between charts and about them, a fraction of the square's side, in [0, 0.25)} \cgalParamDefault{0.01} \cgalParamNEnd
-  \cgalParamNBegin{min_chart_fill} \cgalParamDescription{a chart filling less of its least bounding rectangle is split for packing, in [0, 1)} \cgalParamDefault{0.6} \cgalParamNEnd
+  \cgalParamNBegin{min_chart_fill} \cgalParamDescription{a chart filling less of its least bounding rectangle is split for packing (by straight cuts, under a few rules, the densest packing kept; 0: never split), in [0, 1)} \cgalParamDefault{0.6} \cgalParamNEnd
   \cgalParamNBegin{cone_log_scale} \cgalParamDescription{the cones' bound on the conformal log scale factor, > 0} \cgalParamDefault{1} \cgalParamNEnd
   \cgalParamNBegin{max_distortion} \cgalParamDescription{a bound on each piece's mean distortion (area-weighted): a piece above it is cut into 2, 3, 4, 6, 9, ... charts of nearly constant normal (CGAL's variational shape approximation) and flattened again until it holds (or its charts would have fewer than 16 faces)} \cgalParamDefault{none} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the most iterations of each chart's optimization} \cgalParamDefault{100} \cgalParamNEnd

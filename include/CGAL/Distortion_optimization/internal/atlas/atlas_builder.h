@@ -105,8 +105,7 @@ public:
         flatten(piece);
       }
     }
-    for(Piece& piece : pieces_) split(piece);
-    pack();
+    split_and_pack();
     return collect();
   }
 
@@ -240,21 +239,48 @@ private:
     }
   }
 
-  // A flattened piece that fills its bounding rectangle poorly, split into charts for packing.
-  void split(Piece& piece)
+  // The flattened pieces split into charts for packing (split_charts.h) by each of a few rules (none;
+  // lines across the longer side; lines in four directions), each split packed, and the densest
+  // packing kept: the rules' figure of merit, how the parts fill their rectangles, only guesses at
+  // how densely they pack, and packing is cheap beside flattening. The edges between parts become seams.
+  void split_and_pack()
   {
-    piece.part = split_for_packing(piece.corner, piece.uv, options_.min_fill);
-    piece.parts = piece.part.empty() ? 0 : *std::max_element(piece.part.begin(), piece.part.end()) + 1;
-    for(auto e : piece.mesh.edges()) {
-      const auto h = piece.mesh.halfedge(e), g = piece.mesh.opposite(h);
-      if(!piece.mesh.is_border(e) && piece.part[std::size_t(piece.mesh.face(h))] != piece.part[std::size_t(piece.mesh.face(g))])
-        piece.seam[std::size_t(e)] = true;
+    std::vector<Split_rule> rules{{0, 0}};
+    if(options_.min_fill > 0) rules.insert(rules.end(), {{1, 5}, {4, 7}});
+    struct Packed { std::vector<std::uint32_t> part; std::uint32_t parts; std::vector<std::array<Vector<2>, 3>> corner_uv; };
+    std::vector<Packed> best(pieces_.size());
+    std::vector<std::vector<std::uint32_t>> tried;   // the last rule's parts: a rule that splits alike is not packed again
+    for(const Split_rule& rule : rules) {
+      bool alike = !tried.empty();
+      for(std::size_t k = 0; k < pieces_.size(); ++k) {
+        Piece& piece = pieces_[k];
+        piece.part = split_for_packing(piece.corner, piece.uv, options_.min_fill, rule);
+        piece.parts = piece.part.empty() ? 0 : *std::max_element(piece.part.begin(), piece.part.end()) + 1;
+        alike = alike && piece.part == tried[k];
+      }
+      if(alike) continue;
+      tried.clear();
+      for(const Piece& piece : pieces_) tried.push_back(piece.part);
+      const double efficiency = pack();
+      if(efficiency > efficiency_ || &rule == &rules.front()) {
+        efficiency_ = efficiency;
+        for(std::size_t k = 0; k < pieces_.size(); ++k) best[k] = {pieces_[k].part, pieces_[k].parts, pieces_[k].corner_uv};
+      }
+    }
+    for(std::size_t k = 0; k < pieces_.size(); ++k) {
+      Piece& piece = pieces_[k];
+      piece.part = std::move(best[k].part), piece.parts = best[k].parts, piece.corner_uv = std::move(best[k].corner_uv);
+      for(auto e : piece.mesh.edges()) {
+        const auto h = piece.mesh.halfedge(e), g = piece.mesh.opposite(h);
+        if(!piece.mesh.is_border(e) && piece.part[std::size_t(piece.mesh.face(h))] != piece.part[std::size_t(piece.mesh.face(g))])
+          piece.seam[std::size_t(e)] = true;
+      }
     }
   }
 
   // Every chart at one scale (the same texel density), then packed; each face's corners get their
-  // chart's packed UVs.
-  void pack()
+  // chart's packed UVs. Returns the packing's efficiency.
+  double pack()
   {
     double area = 0, uv_area = 0;
     for(const Piece& piece : pieces_) area += piece.area, uv_area += piece.uv_area;
@@ -283,7 +309,7 @@ private:
         chart.area += 0.5 * s * s * (a[0] * b[1] - a[1] * b[0]);
       }
     }
-    efficiency_ = pack_charts(charts, options_.gutter);
+    const double efficiency = pack_charts(charts, options_.gutter);
     std::size_t first = 0;
     for(std::size_t n = 0; n < pieces_.size(); ++n) {
       Piece& piece = pieces_[n];
@@ -292,6 +318,7 @@ private:
         for(int i = 0; i < 3; ++i) piece.corner_uv[f][i] = charts[first + piece.part[f]].uv[std::size_t(local[n][3 * f + i])];
       first += piece.parts;
     }
+    return efficiency;
   }
 
   Atlas_arrays collect() const

@@ -132,15 +132,17 @@ inline bool fits(const Cell_grid& mask, const Cell_grid& grid, std::size_t x, st
 // Packs the charts into the unit square at one scale (every chart keeps the texel density of the
 // others), turned (never mirrored), `gutter` apart (a fraction of the square's side). The charts
 // are rasterized, conservatively, on a grid of about 256 cells across the root of their area
-// (fewer beyond 300 charts, down to 64, to bound the time); each, the largest first, in the best of its four
-// quarter turns from its least bounding rectangle's frame, goes where its cells meet none taken
-// and the packing's bounding box grows least, then lowest, then leftmost. Unlike dropping charts
-// onto a horizon (Levy, Petitjean, Ray and Maillot, "Least squares conformal maps for automatic
-// texture atlas generation", 2002), this fills the hollows of the charts placed before, as the
-// bitmap packing of game engines' atlas tools does. Taken cells are grown by the gutter, at least
-// one cell: charts never meet. Two ways of weighing the growth are tried (the larger side, then
-// the area; the area with a toll on elongation) and the denser kept. Returns the charts' UV area
-// over that of the rectangle bounding them all.
+// (up to 384 from 32 charts on, for small charts to keep their shape; fewer beyond 300 charts,
+// down to 64, to bound the time); each, the largest first, in the best of its four quarter turns
+// from its least bounding rectangle's frame, goes where its cells meet none taken and the
+// packing's bounding box grows least, then lowest, then leftmost. Unlike dropping charts onto a
+// horizon (Levy, Petitjean, Ray and Maillot, "Least squares conformal maps for automatic texture
+// atlas generation", 2002), this fills the hollows of the charts placed before, as the bitmap
+// packing of game engines' atlas tools does. Taken cells are grown by the cells nearer than the
+// gutter (a rounded square; the cells about at least): charts never meet and stay the gutter
+// apart. Two ways of weighing the growth are tried (the larger side, then the area; the area with
+// a toll on elongation) and the denser kept. Returns the charts' UV area over that of the
+// rectangle bounding them all.
 inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
 {
   const std::size_t n = charts.size();
@@ -164,7 +166,8 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
     const double w = size[k][0], h = size[k][1], u = p[0], v = p[1];
     return turn == 0 ? p : turn == 1 ? Vector<2>(h - v, u) : turn == 2 ? Vector<2>(w - u, h - v) : Vector<2>(v, w - u);
   };
-  const double d = std::sqrt(area) / (std::max)(64., 256 * (std::min)(1., std::sqrt(300. / double(n))));   // a cell's side
+  const double across = 256 * std::clamp(std::sqrt(double(n) / 32), 1., 1.5) * (std::min)(1., std::sqrt(300. / double(n)));
+  const double d = std::sqrt(area) / (std::max)(64., across);   // a cell's side
   std::vector<std::vector<Cell_grid>> masks(n);
   std::vector<std::array<std::size_t, 2>> extent(n);   // in cells
   std::size_t longest = 0;
@@ -182,10 +185,20 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
   }
 
   struct Placement { int turn = 0; std::size_t x = 0, y = 0; };
-  // Every chart placed with its taken cells grown by `g`, the growth weighed one of two ways, in a
-  // square of `cap` cells; false if one did not fit.
-  const auto place = [&](std::size_t g, int weighing, std::size_t cap, std::vector<Placement>& at) {
+  // Every chart placed at least `gap` cells from the others, the growth weighed one of two ways, in
+  // a square of `cap` cells; false if one did not fit.
+  const auto place = [&](double gap, int weighing, std::size_t cap, std::vector<Placement>& at) {
     Cell_grid grid(cap, cap);
+    // Cells (x + dx, y + dy) about a taken cell (x, y) that a point nearer than `gap` cells to it can
+    // lie in: those whose squares are nearer than that, |dx| <= reach[|dy|] (a rounded square: a
+    // square of side 2 g + 1 would keep charts further apart than asked along the diagonals).
+    const std::size_t g = (std::max)(std::size_t(1), std::size_t(std::ceil(gap)));
+    std::vector<std::size_t> reach(g + 1, 0);
+    for(std::size_t dy = 0; dy <= g; ++dy)
+      for(std::size_t dx = 0; dx <= g; ++dx) {
+        const double a = dx > 0 ? double(dx - 1) : 0., b = dy > 0 ? double(dy - 1) : 0.;
+        if(a * a + b * b < (std::max)(gap * gap, 1e-12)) reach[dy] = dx;
+      }
     std::size_t W = 0, H = 0;
     // The growth of the packing's bounding box (W, H) by a chart put at (x, y), then lower, then
     // more to the left; as a lexicographic key.
@@ -224,8 +237,10 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
       for(std::size_t r = 0; r < m.height; ++r)
         for(std::size_t c = 0; c < m.width; ++c)
           if(m.get(c, r))
-            for(std::size_t y = p.y + r >= g ? p.y + r - g : 0; y <= (std::min)(cap - 1, p.y + r + g); ++y)
-              for(std::size_t x = p.x + c >= g ? p.x + c - g : 0; x <= (std::min)(cap - 1, p.x + c + g); ++x) grid.set(x, y);
+            for(std::size_t y = p.y + r >= g ? p.y + r - g : 0; y <= (std::min)(cap - 1, p.y + r + g); ++y) {
+              const std::size_t k = reach[y > p.y + r ? y - p.y - r : p.y + r - y];
+              for(std::size_t x = p.x + c >= k ? p.x + c - k : 0; x <= (std::min)(cap - 1, p.x + c + k); ++x) grid.set(x, y);
+            }
       W = (std::max)(W, p.x + m.width), H = (std::max)(H, p.y + m.height);
     }
     return true;
@@ -246,16 +261,17 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
   for(int weighing = 0; weighing < 2; ++weighing) {
     double guess = std::sqrt(area / 0.6) / (1 - 2 * gutter);
     for(int pass = 0; pass < 2; ++pass) {
-      const std::size_t g = (std::max)(std::size_t(1), std::size_t(std::ceil(gutter * guess / d)));
+      const double gap = 1.02 * gutter * guess / d;   // in cells, with a little to spare for the next side
+      const std::size_t g = (std::max)(std::size_t(1), std::size_t(std::ceil(gap)));
       double cells = 0;   // twice the side of a square holding every chart's rectangle with its gap should do
       for(const auto& [w, h] : extent) cells += double(w + g) * double(h + g);
       std::size_t cap = 2 * std::size_t(std::sqrt(cells)) + longest + g;
       std::vector<Placement> at(n);
-      while(!place(g, weighing, cap, at)) cap *= 2;
+      while(!place(gap, weighing, cap, at)) cap *= 2;
       const std::array<double, 2> e = extents(at);
       guess = (std::max)(e[0], e[1]) / (1 - 2 * gutter);
-      if((gutter * guess <= g * d || pass == 1) && area / (e[0] * e[1]) > best) best = area / (e[0] * e[1]), placed = at, side = guess;
-      if(gutter * guess <= g * d) break;
+      if((gutter * guess <= gap * d || pass == 1) && area / (e[0] * e[1]) > best) best = area / (e[0] * e[1]), placed = at, side = guess;
+      if(gutter * guess <= gap * d) break;
     }
   }
   const double margin = gutter * side;

@@ -14,7 +14,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -23,15 +25,22 @@ namespace CGAL {
 namespace Distortion_optimization {
 namespace internal {
 
+// How a part is cut: by straight lines across `directions` directions evenly turned from its least
+// bounding rectangle's longer side (1: across that side only), each at `places` places evenly
+// spread over the middle half of the part's extent along it.
+struct Split_rule
+{
+  int directions = 1, places = 5;
+};
+
 // The parts of a flattened chart (its faces by their vertices, the vertices' UVs), as a part
 // number per face. A part that fills less than `min_fill` of its least bounding rectangle is cut
-// by a straight line across its longer side, at the place (of five tried) where its pieces fill
-// their own rectangles best, if that gains a twentieth at least; each piece is one part (a line
-// may cut a branch into several), split again in turn, to 3 levels, while a part has 128 faces or more.
-// The parts keep the chart's map: its distortion and injectivity are unchanged, and the edges
-// between parts become seams.
+// by the line of `rule` where its pieces fill their own rectangles best, if that gains a twentieth
+// at least; each piece is one part (a line may cut a branch into several), split again in turn,
+// to 3 levels, while a part has 128 faces or more. The parts keep the chart's map: its distortion
+// and injectivity are unchanged, and the edges between parts become seams.
 inline std::vector<std::uint32_t> split_for_packing(const std::vector<std::array<std::uint32_t, 3>>& faces,
-                                                    const std::vector<Vector<2>>& uv, double min_fill)
+                                                    const std::vector<Vector<2>>& uv, double min_fill, Split_rule rule = {})
 {
   const std::size_t F = faces.size();
   std::vector<std::uint32_t> part(F, 0);
@@ -58,15 +67,18 @@ inline std::vector<std::uint32_t> split_for_packing(const std::vector<std::array
     const Vector<2> a = uv[faces[f][1]] - uv[faces[f][0]], b = uv[faces[f][2]] - uv[faces[f][0]];
     return 0.5 * std::abs(a[0] * b[1] - a[1] * b[0]);
   };
-  // A set of faces' area and its least bounding rectangle's.
-  std::vector<std::uint32_t> seen(uv.size(), std::uint32_t(-1));
+  // A set of faces' area and its least bounding rectangle's. The rectangle bounds the set's border:
+  // the vertices of its faces with a side not shared within the set, fewer to sort for the hull.
+  std::vector<std::uint32_t> seen(uv.size(), std::uint32_t(-1)), in(F, std::uint32_t(-1));
   std::uint32_t stamp = 0;
   const auto fill = [&](const std::vector<std::uint32_t>& set, Bounding_rectangle* frame = nullptr) {
     ++stamp;
+    for(std::uint32_t f : set) in[f] = stamp;
     std::vector<Vector<2>> points;
     double a = 0;
     for(std::uint32_t f : set) {
       a += area(f);
+      if(std::count_if(neighbours[f].begin(), neighbours[f].end(), [&](std::uint32_t g) { return in[g] == stamp; }) == 3) continue;
       for(std::uint32_t v : faces[f])
         if(seen[v] != stamp) seen[v] = stamp, points.push_back(uv[v]);
     }
@@ -108,18 +120,21 @@ inline std::vector<std::uint32_t> split_for_packing(const std::vector<std::array
     const auto [a, r] = fill(set, &frame);
     std::vector<std::vector<std::uint32_t>> best;
     double best_fill = r > 0 ? a / r : 1;
-    if(best_fill < min_fill && level < 3 && set.size() >= 128) {
+    const bool splittable = best_fill < min_fill && level < 3 && set.size() >= 128;
+    best_fill += 0.05;   // the gain a cut must make
+    for(int d = 0; splittable && d < rule.directions; ++d) {
+      const double turn = M_PI * d / rule.directions;
+      const double c = frame.c * std::cos(turn) - frame.s * std::sin(turn), s = frame.s * std::cos(turn) + frame.c * std::sin(turn);
       std::vector<double> along(set.size());
       double u0 = std::numeric_limits<double>::infinity(), u1 = -u0;
       for(std::size_t k = 0; k < set.size(); ++k) {
         const auto& t = faces[set[k]];
         const Vector<2> centre = (uv[t[0]] + uv[t[1]] + uv[t[2]]) / 3;
-        along[k] = frame.c * centre[0] + frame.s * centre[1];
+        along[k] = c * centre[0] + s * centre[1];
         u0 = (std::min)(u0, along[k]), u1 = (std::max)(u1, along[k]);
       }
-      const double gain = best_fill + 0.05;
-      best_fill = gain;
-      for(double t : {0.25, 0.375, 0.5, 0.625, 0.75}) {
+      for(int i = 0; i < rule.places; ++i) {
+        const double t = rule.places > 1 ? 0.25 + 0.5 * i / (rule.places - 1) : 0.5;
         std::vector<std::uint32_t> below, above;
         for(std::size_t k = 0; k < set.size(); ++k) (along[k] < u0 + t * (u1 - u0) ? below : above).push_back(set[k]);
         std::vector<std::vector<std::uint32_t>> split = pieces(below), other = pieces(above);
