@@ -132,15 +132,15 @@ inline bool fits(const Cell_grid& mask, const Cell_grid& grid, std::size_t x, st
 // Packs the charts into the unit square at one scale (every chart keeps the texel density of the
 // others), turned (never mirrored), `gutter` apart (a fraction of the square's side). The charts
 // are rasterized, conservatively, on a grid of about 256 cells across the root of their area
-// (up to 384 from 32 charts on, for small charts to keep their shape; fewer beyond 300 charts,
-// down to 64, to bound the time); each, the largest first, in the best of its four quarter turns
+// (growing to 384 from 32 to 72 charts, for small charts to keep their shape; falling as the root
+// of 300 over their number beyond 133 charts, down to 64, to bound the time); each, the largest first, in the best of its four quarter turns
 // from its least bounding rectangle's frame, goes where its cells meet none taken and the
 // packing's bounding box grows least, then lowest, then leftmost. Unlike dropping charts onto a
 // horizon (Levy, Petitjean, Ray and Maillot, "Least squares conformal maps for automatic texture
 // atlas generation", 2002), this fills the hollows of the charts placed before, as the bitmap
 // packing of game engines' atlas tools does. Taken cells are grown by the cells nearer than the
 // gutter (a rounded square; the cells about at least): charts never meet and stay the gutter
-// apart. Two ways of weighing the growth are tried (the larger side, then the area; the area with
+// apart (with very many charts no gap of that size may exist: then the densest packing is kept). Two ways of weighing the growth are tried (the larger side, then the area; the area with
 // a toll on elongation) and the denser kept. Returns the charts' UV area over that of the
 // rectangle bounding them all.
 inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
@@ -166,7 +166,7 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
     const double w = size[k][0], h = size[k][1], u = p[0], v = p[1];
     return turn == 0 ? p : turn == 1 ? Vector<2>(h - v, u) : turn == 2 ? Vector<2>(w - u, h - v) : Vector<2>(v, w - u);
   };
-  const double across = 256 * std::clamp(std::sqrt(double(n) / 32), 1., 1.5) * (std::min)(1., std::sqrt(300. / double(n)));
+  const double across = 256 * (std::min)(std::clamp(std::sqrt(double(n) / 32), 1., 1.5), std::sqrt(300. / double(n)));
   const double d = std::sqrt(area) / (std::max)(64., across);   // a cell's side
   std::vector<std::vector<Cell_grid>> masks(n);
   std::vector<std::array<std::size_t, 2>> extent(n);   // in cells
@@ -238,8 +238,8 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
         for(std::size_t c = 0; c < m.width; ++c)
           if(m.get(c, r))
             for(std::size_t y = p.y + r >= g ? p.y + r - g : 0; y <= (std::min)(cap - 1, p.y + r + g); ++y) {
-              const std::size_t k = reach[y > p.y + r ? y - p.y - r : p.y + r - y];
-              for(std::size_t x = p.x + c >= k ? p.x + c - k : 0; x <= (std::min)(cap - 1, p.x + c + k); ++x) grid.set(x, y);
+              const std::size_t dx = reach[y > p.y + r ? y - p.y - r : p.y + r - y];
+              for(std::size_t x = p.x + c >= dx ? p.x + c - dx : 0; x <= (std::min)(cap - 1, p.x + c + dx); ++x) grid.set(x, y);
             }
       W = (std::max)(W, p.x + m.width), H = (std::max)(H, p.y + m.height);
     }
@@ -258,6 +258,7 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
   // (with very many charts no gap of that size may exist; the second pass's is kept).
   std::vector<Placement> placed(n);
   double best = -1, side = 0;
+  bool best_apart = false;
   for(int weighing = 0; weighing < 2; ++weighing) {
     double guess = std::sqrt(area / 0.6) / (1 - 2 * gutter);
     for(int pass = 0; pass < 2; ++pass) {
@@ -270,8 +271,11 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
       while(!place(gap, weighing, cap, at)) cap *= 2;
       const std::array<double, 2> e = extents(at);
       guess = (std::max)(e[0], e[1]) / (1 - 2 * gutter);
-      if((gutter * guess <= gap * d || pass == 1) && area / (e[0] * e[1]) > best) best = area / (e[0] * e[1]), placed = at, side = guess;
-      if(gutter * guess <= gap * d) break;
+      // A packing that keeps the gutter at its final side beats one that does not.
+      const bool apart = gutter * guess <= gap * d;
+      if((apart || pass == 1) && std::make_pair(apart, area / (e[0] * e[1])) > std::make_pair(best_apart, best))
+        best = area / (e[0] * e[1]), best_apart = apart, placed = at, side = guess;
+      if(apart) break;
     }
   }
   const double margin = gutter * side;

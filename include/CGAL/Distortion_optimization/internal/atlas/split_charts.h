@@ -34,7 +34,9 @@ struct Split_rule
 };
 
 // The parts of a flattened chart (its faces by their vertices, the vertices' UVs), as a part
-// number per face. A part that fills less than `min_fill` of its least bounding rectangle is cut
+// number per face: its connected pieces (faces joined across edges; seams may close about a
+// region), each cut further where it fills its least bounding rectangle poorly. A part that fills
+// less than `min_fill` of its least bounding rectangle is cut
 // by the line of `rule` where its pieces fill their own rectangles best, if that gains a twentieth
 // at least; each piece is one part (a line may cut a branch into several), split again in turn,
 // to 3 levels, while a part has 128 faces or more. The parts keep the chart's map: its distortion
@@ -44,7 +46,7 @@ inline std::vector<std::uint32_t> split_for_packing(const std::vector<std::array
 {
   const std::size_t F = faces.size();
   std::vector<std::uint32_t> part(F, 0);
-  if(!(min_fill > 0) || F == 0) return part;
+  if(F == 0) return part;
   // Faces across each edge: the (edge, face) pairs sorted by edge; an edge that two faces share
   // joins them.
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> sides;   // ends of the edge, face
