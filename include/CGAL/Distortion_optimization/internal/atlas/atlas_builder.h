@@ -89,9 +89,10 @@ public:
       Piece& piece = pieces_[k];
       piece.seam = handle_seams(piece.mesh);
       add_user_seams(piece);
-      cotangent_weights_and_defects(piece.mesh, piece.weight, piece.defect);
-      add_hole_seams(piece.mesh, piece.defect, options_.hole_turning, piece.seam);
-      add_cone_seams(piece, options_.max_log_scale);
+      std::vector<double> weight, defect;   // cotangent weights by edge, angle defects by vertex (cones.h)
+      cotangent_weights_and_defects(piece.mesh, weight, defect);
+      add_hole_seams(piece.mesh, defect, options_.hole_turning, piece.seam);
+      add_cone_seams(piece, weight, defect, options_.max_log_scale);
       cut_open(piece);
       flatten(piece);
       // Above the distortion bound: the piece in 2, 3, 4, 6, 9, ... regions (half again each time:
@@ -116,7 +117,6 @@ private:
     std::vector<std::size_t> face;                  // the input face of each
     std::vector<std::uint32_t> vertex;              // the input vertex of each
     std::vector<bool> seam;                         // by edge of `mesh`
-    std::vector<double> weight, defect;             // cotangent weights by edge, angle defects by vertex (cones.h)
     std::size_t cones = 0;
     Mesh chart;                                     // the piece cut open
     std::vector<std::array<std::uint32_t, 3>> corner;   // the chart's vertex at each corner of each face
@@ -181,9 +181,9 @@ private:
   }
 
   // Seams from the cones to the seams there are (Atlas_options::max_log_scale).
-  void add_cone_seams(Piece& piece, double bound)
+  void add_cone_seams(Piece& piece, const std::vector<double>& weight, const std::vector<double>& defect, double bound)
   {
-    const std::vector<Vertex> cones = place_cones(piece.mesh, piece.weight, piece.defect, piece.seam, bound, 64);
+    const std::vector<Vertex> cones = place_cones(piece.mesh, weight, defect, piece.seam, bound, 64);
     for(std::size_t i = 0; i < cones.size(); ++i)
       add_seam_to(piece.mesh, cones[i], cones[i == 0 ? (cones.size() > 1 ? 1 : 0) : 0], piece.seam);
     piece.cones += cones.size();
