@@ -133,16 +133,17 @@ inline bool fits(const Cell_grid& mask, const Cell_grid& grid, std::size_t x, st
 // others), turned (never mirrored), `gutter` apart (a fraction of the square's side). The charts
 // are rasterized, conservatively, on a grid of about 256 cells across the root of their area
 // (growing to 384 from 32 to 72 charts, for small charts to keep their shape; falling as the root
-// of 300 over their number beyond 133 charts, down to 64, to bound the time); each, the largest first, in the best of its four quarter turns
-// from its least bounding rectangle's frame, goes where its cells meet none taken and the
-// packing's bounding box grows least, then lowest, then leftmost. Unlike dropping charts onto a
-// horizon (Levy, Petitjean, Ray and Maillot, "Least squares conformal maps for automatic texture
-// atlas generation", 2002), this fills the hollows of the charts placed before, as the bitmap
-// packing of game engines' atlas tools does. Taken cells are grown by the cells nearer than the
-// gutter (a rounded square; the cells about at least): charts never meet and stay the gutter
-// apart (with very many charts no gap of that size may exist: then the densest packing is kept). Two ways of weighing the growth are tried (the larger side, then the area; the area with
-// a toll on elongation) and the denser kept. Returns the charts' UV area over that of the
-// rectangle bounding them all.
+// of 300 over their number beyond 133 charts, down to 64, to bound the time); each, the largest
+// first, in the best of its four quarter turns from its least bounding rectangle's frame, goes
+// where its cells meet none taken and the packing's bounding box grows least, then lowest, then
+// leftmost. Unlike dropping charts onto a horizon (Levy, Petitjean, Ray and Maillot, "Least
+// squares conformal maps for automatic texture atlas generation", 2002), this fills the hollows
+// of the charts placed before, as the bitmap packing of game engines' atlas tools does. Taken
+// cells are grown by the cells nearer than the gutter (a rounded square; the cells about at
+// least): charts never meet and stay the gutter apart (with very many charts no gap of that size
+// may exist: then the densest packing is kept). Two ways of weighing the growth are tried (the
+// larger side, then the area; the area with a toll on elongation) and the denser kept. Returns
+// the charts' UV area over that of the rectangle bounding them all.
 inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
 {
   const std::size_t n = charts.size();
@@ -255,7 +256,7 @@ inline double pack_charts(std::vector<Chart_to_pack>& charts, double gutter)
     return e;
   };
   // The gap is a fraction of the final side, which depends on the gap: a second pass settles it
-  // (with very many charts no gap of that size may exist; the second pass's is kept).
+  // (with very many charts no gap of that size may exist: the densest second pass is kept).
   std::vector<Placement> placed(n);
   double best = -1, side = 0;
   bool best_apart = false;

@@ -36,11 +36,11 @@ struct Split_rule
 // The parts of a flattened chart (its faces by their vertices, the vertices' UVs), as a part
 // number per face: its connected pieces (faces joined across edges; seams may close about a
 // region), each cut further where it fills its least bounding rectangle poorly. A part that fills
-// less than `min_fill` of its least bounding rectangle is cut
-// by the line of `rule` where its pieces fill their own rectangles best, if that gains a twentieth
-// at least; each piece is one part (a line may cut a branch into several), split again in turn,
-// to 3 levels, while a part has 128 faces or more. The parts keep the chart's map: its distortion
-// and injectivity are unchanged, and the edges between parts become seams.
+// less than `min_fill` of its least bounding rectangle is cut by the line of `rule` where its
+// pieces fill their own rectangles best, if that gains a twentieth at least; each piece is one
+// part (a line may cut a branch into several), split again in turn, to 3 levels, while a part has
+// 128 faces or more. The parts keep the chart's map: its distortion and injectivity are
+// unchanged, and the edges between parts become seams.
 inline std::vector<std::uint32_t> split_for_packing(const std::vector<std::array<std::uint32_t, 3>>& faces,
                                                     const std::vector<Vector<2>>& uv, double min_fill, Split_rule rule = {})
 {
