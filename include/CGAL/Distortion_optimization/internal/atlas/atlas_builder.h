@@ -198,9 +198,16 @@ private:
     Mesh& m = piece.mesh;
     auto region = m.add_property_map<Mesh::Face_index, std::size_t>("f:region", 0).first;
     CGAL::Surface_mesh_approximation::approximate_triangle_mesh(m, CGAL::parameters::max_number_of_proxies(regions).face_proxy_map(region));
-    for(auto e : m.edges())
-      if(!m.is_border(e) && region[m.face(m.halfedge(e))] != region[m.face(m.opposite(m.halfedge(e)))]) piece.seam[std::size_t(e)] = true;
+    add_seams_between(m, [&](Mesh::Face_index f) { return region[f]; }, piece.seam);
     m.remove_property_map(region);
+  }
+
+  // Marks as seams the edges between faces of different labels (regions, parts).
+  template <class Label>
+  static void add_seams_between(const Mesh& m, const Label& label, std::vector<bool>& seam)
+  {
+    for(auto e : m.edges())
+      if(!m.is_border(e) && label(m.face(m.halfedge(e))) != label(m.face(m.opposite(m.halfedge(e))))) seam[std::size_t(e)] = true;
   }
 
   void cut_open(Piece& piece) { piece.chart = cut_along(piece.mesh, piece.seam, piece.corner); }
@@ -270,11 +277,7 @@ private:
     for(std::size_t k = 0; k < pieces_.size(); ++k) {
       Piece& piece = pieces_[k];
       piece.part = std::move(best[k].part), piece.parts = best[k].parts, piece.corner_uv = std::move(best[k].corner_uv);
-      for(auto e : piece.mesh.edges()) {
-        const auto h = piece.mesh.halfedge(e), g = piece.mesh.opposite(h);
-        if(!piece.mesh.is_border(e) && piece.part[std::size_t(piece.mesh.face(h))] != piece.part[std::size_t(piece.mesh.face(g))])
-          piece.seam[std::size_t(e)] = true;
-      }
+      add_seams_between(piece.mesh, [&](Mesh::Face_index f) { return piece.part[std::size_t(f)]; }, piece.seam);
     }
   }
 
