@@ -156,8 +156,9 @@ returns the matrix of second derivatives of D in the singular values `s` (ordere
 Detected when `m.template hessian<n>(s)` is well-formed. With it, the global steps of
 `CGAL::minimize_distortion()` may be projected Newton steps (`Distortion_optimization::Global_solver`):
 the package builds each cell's Hessian in its vertices from `gradient()` and `hessian()` and
-makes it positive semi-definite. For a pair of equal singular values it uses `h(i,i) - h(i,j)`,
-which assumes D symmetric in them. A result that is not finite on some cell makes that step use
+makes it positive semi-definite. For a pair of nearly equal singular values it uses the larger of
+`h(i,i) - h(i,j)` (the limit where D is smooth and symmetric in them) and the gradient's difference
+over the smallest gap resolved (a kink, as in a maximum of two terms). A result that is not finite on some cell makes that step use
 the Laplacian instead. `Product` and `Weighted_sum` have it when both operands do.
 */
 template <int n>

@@ -34,6 +34,8 @@ public:
   virtual const Measure_kernel<3>& kernel_3() const = 0;
   // The smooth measure whose Newton steps this one takes (newton_model.h); null: its own.
   std::shared_ptr<const Any_measure_model> newton_model;
+  // Whether its own Newton steps are taken by default where no model's are (newton_model.h).
+  bool own_newton_steps_lead = true;
 };
 
 // The kernel of `Measure` in dimension n: each function the measure's own.
@@ -73,6 +75,7 @@ class Any_measure_model_of final : public Any_measure_model
 public:
   explicit Any_measure_model_of(const Measure& measure) : measure_(measure), kernel_2_(measure_), kernel_3_(measure_)
   {
+    own_newton_steps_lead = Newton_model<Measure>::own_steps_lead(measure_);
     if(const auto model = Newton_model<Measure>::of(measure_))
       newton_model = std::make_shared<const Any_measure_model_of<typename Newton_model<Measure>::type>>(*model);
   }
@@ -137,6 +140,7 @@ public:
     if(!model_->newton_model) return std::nullopt;
     return Any_measure(model_->newton_model);
   }
+  bool own_newton_steps_lead() const { return model_->own_newton_steps_lead; }
   /// \endcond
 
 private:
@@ -151,6 +155,7 @@ struct Newton_model<Any_measure>
 {
   using type = Any_measure;
   static std::optional<type> of(const Any_measure& measure) { return measure.newton_model(); }
+  static bool own_steps_lead(const Any_measure& measure) { return measure.own_newton_steps_lead(); }
 };
 
 } // namespace internal

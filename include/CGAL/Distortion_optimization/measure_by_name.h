@@ -131,16 +131,41 @@ public:
         gradients[count++] = m.template gradient<n>(s);
       });
     Singular_values<n> g = Singular_values<n>::Zero();
-    for(std::size_t k = 0; k < count; ++k) {
-      double others = 1;
-      for(std::size_t j = 0; j < count; ++j)
-        if(j != k) others *= values[j];
-      g += others * gradients[k];
-    }
+    for(std::size_t k = 0; k < count; ++k) g += product_except(values, count, k, k) * gradients[k];
     return g;
+  }
+  // sum_k (prod_{j != k} D_j) hess D_k + sum_{k != l} (prod_{j != k, l} D_j) grad D_k grad D_l^T.
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    std::array<double, max_factors> values;
+    std::array<Singular_values<n>, max_factors> gradients;
+    std::array<Singular_values_hessian<n>, max_factors> hessians;
+    std::size_t count = 0;
+    for(std::size_t k : factors_)
+      visit(k, [&](const auto& m) {
+        values[count] = m.template value<n>(s);
+        gradients[count] = m.template gradient<n>(s);
+        hessians[count++] = m.template hessian<n>(s);
+      });
+    Singular_values_hessian<n> h = Singular_values_hessian<n>::Zero();
+    for(std::size_t k = 0; k < count; ++k) {
+      h += product_except(values, count, k, k) * hessians[k];
+      for(std::size_t l = 0; l < count; ++l)
+        if(l != k) h += product_except(values, count, k, l) * (gradients[k] * gradients[l].transpose());
+    }
+    return h;
   }
 
 private:
+  // The product of values[0..count) but for the factors k and l.
+  static double product_except(const std::array<double, max_factors>& values, std::size_t count, std::size_t k, std::size_t l)
+  {
+    double p = 1;
+    for(std::size_t j = 0; j < count; ++j)
+      if(j != k && j != l) p *= values[j];
+    return p;
+  }
   template <class F>
   static void visit(std::size_t k, F&& f)
   {
@@ -219,6 +244,13 @@ public:
     Singular_values<n> g = Singular_values<n>::Zero();
     for(const Term& t : terms_) g += t.weight * t.product.template gradient<n>(s);
     return g;
+  }
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    Singular_values_hessian<n> h = Singular_values_hessian<n>::Zero();
+    for(const Term& t : terms_) h += t.weight * t.product.template hessian<n>(s);
+    return h;
   }
 
 private:

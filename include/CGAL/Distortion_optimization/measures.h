@@ -78,6 +78,51 @@ Singular_values<n> unit(int i)
   return Singular_values<n>::Unit(i);
 }
 
+// The monomial F = prod s_i^c_i, through which the ratios of singular values below are
+// differentiated: dF/ds_i = F c_i / s_i, d2F/ds_i ds_j = F (c_i c_j - c_i delta_ij) / (s_i s_j).
+template <int n>
+Singular_values<n> monomial_gradient(double F, const Singular_values<n>& c, const Singular_values<n>& s)
+{
+  return F * c.cwiseQuotient(s);
+}
+template <int n>
+Singular_values_hessian<n> monomial_hessian(double F, const Singular_values<n>& c, const Singular_values<n>& s)
+{
+  const Singular_values<n> q = c.cwiseQuotient(s);
+  Singular_values_hessian<n> h = F * (q * q.transpose());
+  h.diagonal() -= F * c.cwiseQuotient(s.cwiseAbs2());
+  return h;
+}
+
+template <int n>
+Singular_values_hessian<n> nan_hessian()
+{
+  return Singular_values_hessian<n>::Constant(not_a_number);
+}
+
+// A measure that is the larger of two monomials of the singular values (K = max(K_I, K_O),
+// C = max(s_1, 1/s_n), V = max(det, 1/det)), or one (the condition number): its derivatives are
+// those of the monomial that is larger, NaN where s_n <= 0. `Ratio::branch(s)` gives that
+// monomial's value and exponents.
+template <class Ratio>
+struct Monomial_derivatives
+{
+  template <int n>
+  Singular_values<n> gradient(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return nan_gradient<n>();
+    const auto [F, c] = Ratio::template branch<n>(s);
+    return monomial_gradient<n>(F, c, s);
+  }
+  template <int n>
+  Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
+  {
+    if(!(s[n - 1] > 0)) return nan_hessian<n>();
+    const auto [F, c] = Ratio::template branch<n>(s);
+    return monomial_hessian<n>(F, c, s);
+  }
+};
+
 template <class Measure, int n, class = void>
 struct Has_laplacian_weight : std::false_type {};
 template <class Measure, int n>
@@ -166,7 +211,8 @@ struct Pair_of_measures    // what a combination of two measures inherits from b
 /// Quasi-conformal dilatation K = max(K_I, K_O) (eq. 8): K_I = s_1...s_{n-1} / s_n^{n-1},
 /// K_O = s_1^{n-1} / (s_2...s_n). Equals the condition number in 2D. Regular, minimum 1.
 /// \cgalModels `DistortionMeasure`
-struct Conformal_dilatation : measures_internal::Regular_measure<measures_internal::conformal_weight>
+struct Conformal_dilatation : measures_internal::Regular_measure<measures_internal::conformal_weight>,
+                              measures_internal::Monomial_derivatives<Conformal_dilatation>
 {
   std::string name() const { return "conformal"; }
 
@@ -174,31 +220,26 @@ struct Conformal_dilatation : measures_internal::Regular_measure<measures_intern
   double value(const Singular_values<n>& s) const
   {
     if(!(s[n - 1] > 0)) return infinity;
-    const double p = s.prod();
-    return std::max(p / measures_internal::power<n>(s[n - 1]), measures_internal::power<n>(s[0]) / p);
+    return branch<n>(s).first;
   }
+  // K_I = s_1...s_{n-1} s_n^{1-n} or K_O = s_1^{n-1} (s_2...s_n)^-1, whichever is larger, and its exponents.
   template <int n>
-  Singular_values<n> gradient(const Singular_values<n>& s) const
+  static std::pair<double, Singular_values<n>> branch(const Singular_values<n>& s)
   {
-    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
     const double p = s.prod();
     const double inner = p / measures_internal::power<n>(s[n - 1]), outer = measures_internal::power<n>(s[0]) / p;
-    Singular_values<n> g;
-    if(inner >= outer) {   // d(prod/s_n^n)/ds_i = K_I/s_i, and (1-n) K_I/s_n for i = n
-      g = inner * s.cwiseInverse();
-      g[n - 1] = (1 - n) * inner / s[n - 1];
-    } else {               // d(s_1^n/prod)/ds_i = -K_O/s_i, and (n-1) K_O/s_1 for i = 1
-      g = -outer * s.cwiseInverse();
-      g[0] = (n - 1) * outer / s[0];
-    }
-    return g;
+    Singular_values<n> c = Singular_values<n>::Constant(inner >= outer ? 1. : -1.);
+    if(inner >= outer) c[n - 1] = 1 - n;
+    else c[0] = n - 1;
+    return {std::max(inner, outer), c};
   }
 };
 
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Condition number (linear dilatation) s_1 / s_n (eq. 9). Regular, minimum 1.
 /// \cgalModels `DistortionMeasure`
-struct Condition_number : measures_internal::Regular_measure<measures_internal::conformal_weight>
+struct Condition_number : measures_internal::Regular_measure<measures_internal::conformal_weight>,
+                          measures_internal::Monomial_derivatives<Condition_number>
 {
   std::string name() const { return "condition"; }
 
@@ -208,13 +249,9 @@ struct Condition_number : measures_internal::Regular_measure<measures_internal::
     return s[n - 1] > 0 ? s[0] / s[n - 1] : infinity;
   }
   template <int n>
-  Singular_values<n> gradient(const Singular_values<n>& s) const
+  static std::pair<double, Singular_values<n>> branch(const Singular_values<n>& s)
   {
-    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
-    Singular_values<n> g = Singular_values<n>::Zero();
-    g[0] += 1. / s[n - 1];
-    g[n - 1] += -s[0] / (s[n - 1] * s[n - 1]);
-    return g;
+    return {s[0] / s[n - 1], measures_internal::unit<n>(0) - measures_internal::unit<n>(n - 1)};
   }
 };
 
@@ -266,7 +303,8 @@ struct MIPS
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Quasi-isometric dilatation C = max(s_1, 1/s_n) (eq. 12). Regular, minimum 1.
 /// \cgalModels `DistortionMeasure`
-struct Isometric_dilatation : measures_internal::Regular_measure<measures_internal::isometric_weight>
+struct Isometric_dilatation : measures_internal::Regular_measure<measures_internal::isometric_weight>,
+                              measures_internal::Monomial_derivatives<Isometric_dilatation>
 {
   std::string name() const { return "isometric"; }
 
@@ -276,11 +314,10 @@ struct Isometric_dilatation : measures_internal::Regular_measure<measures_intern
     return s[n - 1] > 0 ? std::max(s[0], 1. / s[n - 1]) : infinity;
   }
   template <int n>
-  Singular_values<n> gradient(const Singular_values<n>& s) const
+  static std::pair<double, Singular_values<n>> branch(const Singular_values<n>& s)
   {
-    if(!(s[n - 1] > 0)) return measures_internal::nan_gradient<n>();
-    if(s[0] >= 1. / s[n - 1]) return measures_internal::unit<n>(0);
-    return (-1. / (s[n - 1] * s[n - 1])) * measures_internal::unit<n>(n - 1);
+    if(s[0] >= 1. / s[n - 1]) return {s[0], measures_internal::unit<n>(0)};
+    return {1. / s[n - 1], -measures_internal::unit<n>(n - 1)};
   }
 };
 
@@ -348,7 +385,8 @@ struct Symmetric_dirichlet : measures_internal::Regular_measure<measures_interna
 /// \ingroup PkgDistortionOptimizationMeasures
 /// Volume (area in 2D) distortion V = max(det J, 1/det J) (eq. 15). Regular, minimum 1.
 /// \cgalModels `DistortionMeasure`
-struct Volume_distortion : measures_internal::Regular_measure<measures_internal::isometric_weight>
+struct Volume_distortion : measures_internal::Regular_measure<measures_internal::isometric_weight>,
+                           measures_internal::Monomial_derivatives<Volume_distortion>
 {
   std::string name() const { return "volume"; }
 
@@ -359,11 +397,10 @@ struct Volume_distortion : measures_internal::Regular_measure<measures_internal:
     return d > 0 ? std::max(d, 1. / d) : infinity;
   }
   template <int n>
-  Singular_values<n> gradient(const Singular_values<n>& s) const
+  static std::pair<double, Singular_values<n>> branch(const Singular_values<n>& s)
   {
     const double d = s.prod();
-    if(!(d > 0)) return measures_internal::nan_gradient<n>();
-    return (d >= 1 ? d : -1. / d) * s.cwiseInverse();
+    return {std::max(d, 1. / d), Singular_values<n>::Constant(d >= 1 ? 1. : -1.)};
   }
   template <int n, class T>
   T value_of_invariants(const Jacobian_invariants<T>& I, Jacobian_invariants<T>* dI) const

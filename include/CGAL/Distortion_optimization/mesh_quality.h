@@ -461,8 +461,9 @@ cell. No cell that is valid at the start is ever inverted or flattened (exact pr
                           (`Distortion_optimization::parameters::global_solver()`)}
     \cgalParamType{`Distortion_optimization::Global_solver`}
     \cgalParamDefault{`Distortion_optimization::Global_solver::PROJECTED_NEWTON`}
-    \cgalParamExtra{Newton steps apply to measures with a `hessian()`; the default `Conformal_dilatation` takes the
-                    Laplacian's steps, except on a complex with no vertex constrained (then MIPS's Newton steps; with vertices sliding, MIPS's Hessian as the metric of K's gradient).}
+    \cgalParamExtra{Newton steps apply to measures with a `hessian()`; by default `Conformal_dilatation` takes the
+                    Laplacian's steps, except on a complex with no vertex constrained (then MIPS's Newton steps; with vertices sliding, MIPS's Hessian as the metric of K's gradient);
+                    with `PROJECTED_NEWTON` given, its own Newton steps where vertices are constrained.}
   \cgalParamNEnd
 
   \cgalParamNBegin{use_harmonic_start}

@@ -59,7 +59,7 @@ enum class Schedule
 enum class Global_solver
 {
   REWEIGHTED_LAPLACIAN, ///< the source's Laplacian reweighted per cell, solved by a few conjugate gradient iterations
-  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`, and on a tetrahedral complex with no vertex fixed, sliding ones allowed, K, the condition number and C through a smooth model, whose Hessian with sliding vertices is the metric of the measure's own gradient; the Laplacian otherwise); sliding vertices move in their tangent planes
+  PROJECTED_NEWTON      ///< the energy's Hessian with each cell's part made positive semi-definite, factored (measures with a `hessian()`, and on a tetrahedral complex with no vertex fixed, sliding ones allowed, K, the condition number and C through a smooth model, whose Hessian with sliding vertices is the metric of the measure's own gradient; the Laplacian otherwise); sliding vertices move in their tangent planes. Given explicitly, also the maxima K, the condition number, C and V take their own Newton steps where no model's apply, which they do not by default
 };
 
 /// \ingroup PkgDistortionOptimizationRef
@@ -154,7 +154,9 @@ CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(parallel_sweep_t, parallel_sweep)
 /// A `Global_solver`; default `Global_solver::PROJECTED_NEWTON` (solved by a sparse factorization
 /// for triangle meshes, by truncated conjugate gradients for tetrahedral meshes, whose systems
-/// fill in too much to factor).
+/// fill in too much to factor), except for the maxima `Conformal_dilatation`, `Condition_number`,
+/// `Isometric_dilatation` and `Volume_distortion`, which by default take the reweighted
+/// Laplacian's steps where no smooth model's apply (their kinks make their own Hessians poor models).
 CGAL_DISTORTION_OPTIMIZATION_ADD_NAMED_PARAMETER(global_solver_t, global_solver)
 
 /// `bool`: keep the map globally injective when boundary vertices are free (paper section 3.2):

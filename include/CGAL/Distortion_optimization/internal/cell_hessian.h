@@ -100,9 +100,11 @@ bool cell_hessian(const Measure& measure, const Matrix<n>& J, const Matrix<n>& i
       const Matrix<n> a = svd.U.col(i) * svd.V.col(j).transpose(), b = svd.U.col(j) * svd.V.col(i).transpose();
       add((d[i] + d[j]) / (s[i] + s[j]), root_half * (a - b));
       // Where s_i and s_j nearly coincide, the difference quotient loses its digits: its limit
-      // D_ii - D_ij (for a measure symmetric in s_i, s_j) takes over.
-      const double gap = s[i] - s[j];
-      add(gap > 1e-6 * (s[i] + s[j]) ? (d[i] - d[j]) / gap : h(i, i) - h(i, j), root_half * (a + b));
+      // D_ii - D_ij takes over for a measure smooth and symmetric in s_i, s_j. A maximum such as
+      // K or the condition number has a kink there instead, D_i - D_j stays apart from 0 and the
+      // quotient grows without bound: it is taken at the smallest gap resolved.
+      const double gap = s[i] - s[j], resolved = 1e-6 * (s[i] + s[j]);
+      add(gap > resolved ? (d[i] - d[j]) / gap : std::max(h(i, i) - h(i, j), (d[i] - d[j]) / resolved), root_half * (a + b));
     }
   // Exactly symmetric: the lower triangle, where every mode was added, replaces the upper.
   H.template triangularView<Eigen::StrictlyUpper>() = H.transpose();

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -51,9 +52,10 @@ public:
   // With `newton`, steps take the projected Newton direction where the measure has a Hessian (the
   // reweighted Laplacian's otherwise, and where a Newton solve fails); `iterations`: the most the
   // run takes.
-  Global_step(State& state, bool newton, std::size_t iterations)
+  // `solver`: the user's choice, unset for the default (newton_direction.h).
+  Global_step(State& state, std::optional<Global_solver> solver, std::size_t iterations)
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()), laplacian_(state, system_),
-      newton_(state, system_, newton, iterations) {}
+      newton_(state, system_, solver, iterations) {}
 
   // Whether the steps solve Newton's system (else the reweighted Laplacian's).
   bool is_newton() const { return newton_.taken(); }

@@ -81,7 +81,7 @@ public:
       (guard_ && guard_->is_on_boundary(v) ? guarded_vertices_ : parallel_vertices_).push_back(v);
     if(guard_) state.set_boundary_guard(guard_.get());
     if(options.schedule != Schedule::LOCAL || options.harmonic_start)
-      global_step_ = std::make_unique<Global_step<State>>(state, options.global_solver == Global_solver::PROJECTED_NEWTON,
+      global_step_ = std::make_unique<Global_step<State>>(state, options.global_solver,
                                                           options.iterations);
     // The default schedule: Newton's steps alone, where a local sweep between them costs more
     // than it gains; otherwise alternating, as the reweighted Laplacian's steps need the sweeps.

@@ -47,7 +47,8 @@ struct Options
   bool global_injectivity = false;   // guard the boundary of free boundary vertices
   int threads = 1;
   Parallel_sweep parallel_sweep = Parallel_sweep::INDEPENDENT_SETS;
-  Global_solver global_solver = Global_solver::PROJECTED_NEWTON;
+  // Unset: projected Newton where the measure's own steps lead, or its model's (newton_model.h).
+  std::optional<Global_solver> global_solver;
   // (iteration, energy, inverted cells) -> continue? While untangling, the energy is the barrier's.
   std::function<bool(std::size_t, double, std::size_t)> visitor;
   bool untangle_first = false;

@@ -16,6 +16,7 @@
 #include <CGAL/license/Distortion_optimization.h>
 
 #include <CGAL/Distortion_optimization/measures.h>
+#include <CGAL/Distortion_optimization/parameters.h>
 #include <CGAL/Distortion_optimization/internal/cell_distortion.h>
 #include <CGAL/Distortion_optimization/internal/cell_hessian.h>
 #include <CGAL/Distortion_optimization/internal/global_step/lagged_factorization.h>
@@ -54,14 +55,18 @@ private:
   using Solver = std::conditional_t<n == 2, Lagged_factorization<n>, Truncated_newton<n>>;
 
 public:
-  // `system`: the global steps' (its unknowns the free vertices). With `wanted`, the global steps
-  // are to take Newton's direction where the measure, or its model, has a Hessian; `iterations`:
-  // the most the run takes.
-  Newton_direction(State& state, Laplacian_system<n>& system, bool wanted, std::size_t iterations)
+  // `system`: the global steps' (its unknowns the free vertices). `solver`: the user's choice;
+  // PROJECTED_NEWTON takes Newton's direction wherever the measure, or its model, has a Hessian,
+  // the default (unset) only where the model's or the measure's own steps lead (newton_model.h).
+  // `iterations`: the most the run takes.
+  Newton_direction(State& state, Laplacian_system<n>& system, std::optional<Global_solver> solver, std::size_t iterations)
     : state_(state), p_(state.problem()), system_(system),
       slides_(std::any_of(p_.is_sliding.begin(), p_.is_sliding.end(), [](unsigned char s) { return s != 0; })),
-      model_(Newton_model<Measure>::of(state.measure())),
-      on_(wanted && measures_internal::has_hessian<n>(model()) && (!model_ || every_vertex_moves())),
+      model_(every_vertex_moves() ? Newton_model<Measure>::of(state.measure()) : std::nullopt),
+      on_(solver != Global_solver::REWEIGHTED_LAPLACIAN &&
+          (model_ ? measures_internal::has_hessian<n>(*model_)
+                  : measures_internal::has_hessian<n>(state.measure()) &&
+                      (solver || Newton_model<Measure>::own_steps_lead(state.measure())))),
       proxy_(on_ && model_ && slides_),
       solver_(make_solver(system, on_ && model_ && !slides_, iterations)) {}
 
@@ -82,7 +87,7 @@ public:
   // planes of then: still positive definite, so x descends (the global step projects it).
   bool operator()(const std::vector<Vec>& normal, Eigen::MatrixXd& g, Eigen::MatrixXd& x)
   {
-    if constexpr(!measures_internal::Has_hessian<Model, n>::value) {
+    if constexpr(!measures_internal::Has_hessian<Model, n>::value && !measures_internal::Has_hessian<Measure, n>::value) {
       return false;
     } else {
       std::atomic<bool> finite(true);
@@ -113,15 +118,16 @@ public:
           own_gradient.resize(count);
           measure_gradients(cells, count, own_gradient.data());
         }
+        with_steps_measure([&](const auto& model) {
         for(std::size_t i = 0; i < count; ++i) {
           const std::uint32_t c = cells[i];
-          if(!cell_hessian<n>(model(), p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
+          if(!cell_hessian<n>(model, p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
             // An inverted or flat cell (where a measure that is not normalized is finite): the
             // kernel's gradient (a proxy's is the measure's, below), and the Laplacian's stiffness
             // in each coordinate.
             if(!proxy_) {
               double value;
-              cell_distortions<n>(model(), p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
+              cell_distortions<n>(model, p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
               for(const Vec& v : gradient[i])
                 if(!v.allFinite()) finite = false;
             }
@@ -134,6 +140,7 @@ public:
           if(proxy_) gradient[i] = own_gradient[i];
           if(!normal.empty()) restrict_to_tangent_planes(p_, p_.map.cells[c], normal, H[i], gradient[i]);
         }
+        });
       }, &g);
       if(!finite) return false;
       return solve(g, x);
@@ -147,7 +154,8 @@ private:
     else return Solver(system, may_take_laplacian);
   }
 
-  // Whether no vertex is fixed (some may slide), on a tetrahedral mesh.
+  // Whether no vertex is fixed (some may slide), on a tetrahedral mesh: where a measure's smooth
+  // model has the measure's minimizers or serves as its metric (newton_model.h).
   bool every_vertex_moves() const
   {
     if(n != 3) return false;
@@ -156,11 +164,15 @@ private:
     return true;
   }
 
-  // The measure whose Newton steps are taken: a smooth model's (model_), or the measure's own.
-  const Model& model() const
+  // f(the measure whose Newton steps are taken): the smooth model (model_), or the measure itself.
+  template <class F>
+  void with_steps_measure(F f) const
   {
-    if constexpr(std::is_same<Model, Measure>::value) return model_ ? *model_ : state_.measure();
-    else return *model_;
+    if(model_) {
+      if constexpr(measures_internal::Has_hessian<Model, n>::value) f(*model_);
+    } else {
+      if constexpr(measures_internal::Has_hessian<Measure, n>::value) f(state_.measure());
+    }
   }
 
   // x = -H^-1 g with the last assembled H; false if the solve fails.
