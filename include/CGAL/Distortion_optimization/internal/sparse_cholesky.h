@@ -28,7 +28,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -46,67 +48,200 @@ enum class Fill_reducing_order { NESTED_DISSECTION, MINIMUM_DEGREE };
 // `block` unknowns kept together): METIS's nested dissection or CHOLMOD's AMD, or an order given
 // by an earlier analysis. The graph is block^2 times smaller than the matrix, and an ordering,
 // whose cost the analysis is, takes a fraction of the time it takes on the matrix, for a factor as
-// sparse. Eigen's CholmodSupernodalLLT but for the analysis.
+// sparse.
+//
+// The matrix is handed to CHOLMOD already permuted: given the lower triangle of A and a fill-reducing
+// order, cholmod_factorize() builds the permuted matrix by two transposes at every factorization
+// (its source: only an upper triangle in natural order is factored as it is). Here the order,
+// postordered by a first, simplicial analysis, permutes A's pattern once, with the place of each of
+// A's values in it; each factorization copies the values there and CHOLMOD factors the result in
+// natural order. Solves permute the right-hand side and the solution.
 template <int block>
 class Block_ordered_supernodal_llt
-  : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Block_ordered_supernodal_llt<block>>
 {
-  using Base = Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Block_ordered_supernodal_llt<block>>;
-  using Base::m_analysisIsOk;
-  using Base::m_cholmod;
-  using Base::m_cholmodFactor;
-  using Base::m_factorizationIsOk;
-  using Base::m_info;
-
 public:
   Block_ordered_supernodal_llt()
   {
-    m_cholmod.final_asis = 1;
-    m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
+    cholmod_start(&common_);
+    common_.final_asis = 1;
   }
+  ~Block_ordered_supernodal_llt()
+  {
+    free_factor();
+    cholmod_finish(&common_);
+  }
+  Block_ordered_supernodal_llt(const Block_ordered_supernodal_llt&) = delete;
+  Block_ordered_supernodal_llt& operator=(const Block_ordered_supernodal_llt&) = delete;
 
   // `given_order`, if not empty, is the order of the blocks to eliminate them in, computed for
   // another matrix on the same graph of blocks (see block_order()); else `fill`'s.
   void analyze(const Eigen::SparseMatrix<double>& A, const std::vector<int>& given_order,
                Fill_reducing_order fill = Fill_reducing_order::NESTED_DISSECTION)
   {
-    if(m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &m_cholmod);
-    m_cholmodFactor = nullptr;
-    const int blocks = static_cast<int>(A.rows()) / block;
+    free_factor();
+    info_ = Eigen::NumericalIssue;
+    const Eigen::SparseMatrix<double>* C = compressed(A);
+    const int n = static_cast<int>(C->rows()), blocks = n / block;
     bool ok = true;
     if(is_permutation(given_order, blocks)) {
       block_order_ = given_order;
     } else {
       // CHOLMOD reads its lower triangle; METIS ignores the diagonal.
-      const Eigen::SparseMatrix<double> graph = block_graph<block>(A);
+      const Eigen::SparseMatrix<double> graph = block_graph<block>(*C);
       cholmod_sparse G = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
       block_order_.assign(static_cast<std::size_t>(blocks), 0);
       ok = blocks == 0 || (fill == Fill_reducing_order::NESTED_DISSECTION
-                             ? cholmod_metis(&G, nullptr, 0, 1, block_order_.data(), &m_cholmod)
-                             : cholmod_amd(&G, nullptr, 0, block_order_.data(), &m_cholmod));
+                             ? cholmod_metis(&G, nullptr, 0, 1, block_order_.data(), &common_)
+                             : cholmod_amd(&G, nullptr, 0, block_order_.data(), &common_));
     }
-    std::vector<int> order(static_cast<std::size_t>(A.rows()));
+    std::vector<int> order(static_cast<std::size_t>(n));
     for(int i = 0; i < blocks; ++i)
       for(int a = 0; a < block; ++a) order[static_cast<std::size_t>(block * i + a)] = block * block_order_[i] + a;
+    // The order postordered by its elimination tree (CHOLMOD's final permutation): a simplicial
+    // analysis is enough to find it.
     if(ok) {
-      cholmod_sparse M = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
-      m_cholmod.nmethods = 1;
-      m_cholmod.method[0].ordering = CHOLMOD_GIVEN;
-      m_cholmodFactor = cholmod_analyze_p(&M, order.data(), nullptr, 0, &m_cholmod);
-      ok = m_cholmodFactor != nullptr;
+      cholmod_sparse M = Eigen::viewAsCholmod(C->selfadjointView<Eigen::Lower>());
+      common_.nmethods = 1;
+      common_.method[0].ordering = CHOLMOD_GIVEN;
+      common_.postorder = 1;
+      common_.supernodal = CHOLMOD_SIMPLICIAL;
+      cholmod_factor* symbolic = cholmod_analyze_p(&M, order.data(), nullptr, 0, &common_);
+      ok = symbolic != nullptr;
+      if(ok) permutation_.assign(static_cast<int*>(symbolic->Perm), static_cast<int*>(symbolic->Perm) + n);
+      cholmod_free_factor(&symbolic, &common_);
     }
-    this->m_isInitialized = true;
-    m_info = ok ? Eigen::Success : Eigen::NumericalIssue;
-    m_analysisIsOk = ok;
-    m_factorizationIsOk = false;
+    if(ok) {
+      permute_pattern(*C);
+      cholmod_sparse B = permuted();
+      common_.method[0].ordering = CHOLMOD_NATURAL;
+      common_.postorder = 0;
+      common_.supernodal = CHOLMOD_SUPERNODAL;
+      factor_ = cholmod_analyze(&B, &common_);
+      ok = factor_ != nullptr;
+    }
+    info_ = ok ? Eigen::Success : Eigen::NumericalIssue;
     if(!ok) block_order_.clear();
   }
 
-  void analyzePattern(const Eigen::SparseMatrix<double>& A) { analyze(A, {}); }
+  Eigen::ComputationInfo info() const { return info_; }
+  void setShift(double shift) { shift_ = shift; }
 
+  // Factors A + shift I, A with the analyzed pattern.
+  void factorize(const Eigen::SparseMatrix<double>& A)
+  {
+    const Eigen::SparseMatrix<double>* C = compressed(A);
+    if(!factor_ || C->nonZeros() != static_cast<Eigen::Index>(place_.size())) {
+      info_ = Eigen::InvalidInput;
+      return;
+    }
+    const double* value = C->valuePtr();
+    for(std::size_t k = 0; k < place_.size(); ++k)
+      if(place_[k] >= 0) values_[static_cast<std::size_t>(place_[k])] = value[k];
+    cholmod_sparse B = permuted();
+    double beta[2] = {shift_, 0};
+    cholmod_factorize_p(&B, beta, nullptr, 0, factor_, &common_);
+    info_ = common_.status == CHOLMOD_OK && factor_->minor == factor_->n ? Eigen::Success : Eigen::NumericalIssue;
+  }
+
+  // (A + shift I)^-1 b, after a successful factorize().
+  template <class Rhs>
+  Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
+  {
+    const std::size_t n = permutation_.size();
+    Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> c(b.rows(), b.cols()), x(b.rows(), b.cols());
+    for(std::size_t i = 0; i < n; ++i) c.row(Eigen::Index(i)) = b.row(permutation_[i]);
+    cholmod_dense C;
+    C.nrow = C.d = static_cast<std::size_t>(c.rows());
+    C.ncol = static_cast<std::size_t>(c.cols());
+    C.nzmax = C.nrow * C.ncol;
+    C.x = c.data();
+    C.z = nullptr;
+    C.xtype = CHOLMOD_REAL;
+    C.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* y = cholmod_solve(CHOLMOD_A, factor_, &C, &common_);
+    if(!y) {
+      x.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return x;
+    }
+    const Eigen::Map<const Eigen::MatrixXd> Y(static_cast<const double*>(y->x), Eigen::Index(y->nrow), Eigen::Index(y->ncol));
+    for(std::size_t i = 0; i < n; ++i) x.row(permutation_[i]) = Y.row(Eigen::Index(i));
+    cholmod_free_dense(&y, &common_);
+    return x;
+  }
+
+  const cholmod_common& cholmod() const { return common_; }
   const std::vector<int>& block_order() const { return block_order_; }
 
 private:
+  void free_factor()
+  {
+    if(factor_) cholmod_free_factor(&factor_, &common_);
+    factor_ = nullptr;
+  }
+
+  const Eigen::SparseMatrix<double>* compressed(const Eigen::SparseMatrix<double>& A)
+  {
+    if(A.isCompressed()) return &A;
+    compressed_ = A;
+    compressed_.makeCompressed();
+    return &compressed_;
+  }
+
+  // The lower triangle of A(p, p), p = permutation_, its rows sorted in each column, and where
+  // each stored value of A goes in it (-1: above the diagonal, not read).
+  void permute_pattern(const Eigen::SparseMatrix<double>& A)
+  {
+    const int n = static_cast<int>(A.rows());
+    std::vector<int> inverse(static_cast<std::size_t>(n));
+    for(int i = 0; i < n; ++i) inverse[static_cast<std::size_t>(permutation_[i])] = i;
+    const int* outer = A.outerIndexPtr();
+    const int* inner = A.innerIndexPtr();
+    place_.assign(static_cast<std::size_t>(A.nonZeros()), -1);
+    column_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+    for(int c = 0; c < n; ++c)
+      for(int k = outer[c]; k < outer[c + 1]; ++k)
+        if(inner[k] >= c) ++column_start_[static_cast<std::size_t>(std::min(inverse[inner[k]], inverse[c])) + 1];
+    for(int j = 0; j < n; ++j) column_start_[j + 1] += column_start_[j];
+    const std::size_t stored = static_cast<std::size_t>(column_start_[n]);
+    std::vector<std::pair<int, int>> entries(stored);   // (row, source) by column
+    std::vector<int> next(column_start_.begin(), column_start_.end() - 1);
+    for(int c = 0; c < n; ++c)
+      for(int k = outer[c]; k < outer[c + 1]; ++k)
+        if(inner[k] >= c) {
+          const int i = inverse[inner[k]], j = inverse[c];
+          entries[static_cast<std::size_t>(next[std::min(i, j)]++)] = {std::max(i, j), k};
+        }
+    rows_.resize(stored);
+    values_.assign(stored, 0.);
+    for(int j = 0; j < n; ++j) {
+      std::sort(entries.begin() + column_start_[j], entries.begin() + column_start_[j + 1]);
+      for(int e = column_start_[j]; e < column_start_[j + 1]; ++e) {
+        rows_[static_cast<std::size_t>(e)] = entries[static_cast<std::size_t>(e)].first;
+        place_[static_cast<std::size_t>(entries[static_cast<std::size_t>(e)].second)] = e;
+      }
+    }
+  }
+
+  // CHOLMOD's view of the permuted lower triangle.
+  cholmod_sparse permuted()
+  {
+    cholmod_sparse B;
+    B.nrow = B.ncol = permutation_.size();
+    B.nzmax = values_.size();
+    B.p = column_start_.data();
+    B.i = rows_.data();
+    B.nz = nullptr;
+    B.x = values_.data();
+    B.z = nullptr;
+    B.stype = -1;
+    B.itype = CHOLMOD_INT;
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    B.sorted = 1;
+    B.packed = 1;
+    return B;
+  }
+
   // Whether `order` holds each of 0 .. size - 1 once (an order from another analysis, checked
   // rather than trusted: CHOLMOD would read out of bounds).
   static bool is_permutation(const std::vector<int>& order, int size)
@@ -120,7 +255,14 @@ private:
     return true;
   }
 
-  std::vector<int> block_order_;
+  mutable cholmod_common common_;   // CHOLMOD takes it, with its workspace, in solves too
+  cholmod_factor* factor_ = nullptr;
+  Eigen::ComputationInfo info_ = Eigen::InvalidInput;
+  double shift_ = 0;
+  std::vector<int> block_order_, permutation_;
+  std::vector<int> column_start_, rows_, place_;
+  std::vector<double> values_;
+  Eigen::SparseMatrix<double> compressed_;
 };
 #endif
 
