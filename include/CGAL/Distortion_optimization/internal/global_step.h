@@ -49,10 +49,9 @@ class Global_step
   using Vec = Vector<n>;
 
 public:
-  // With `newton`, steps take the projected Newton direction where the measure has a Hessian (the
-  // reweighted Laplacian's otherwise, and where a Newton solve fails); `iterations`: the most the
-  // run takes.
-  // `solver`: the user's choice, unset for the default (newton_direction.h).
+  // `solver`: the user's choice, unset for the default. Steps take the projected Newton direction
+  // where newton_direction.h says (the reweighted Laplacian's otherwise, and where a Newton solve
+  // fails); `iterations`: the most the run takes.
   Global_step(State& state, std::optional<Global_solver> solver, std::size_t iterations)
     : state_(state), p_(state.problem()), system_(state.problem(), state.workers()), laplacian_(state, system_),
       newton_(state, system_, solver, iterations) {}
