@@ -122,50 +122,55 @@ public:
   template <int n>
   Singular_values<n> gradient(const Singular_values<n>& s) const
   {
-    std::array<double, max_factors> values;
-    std::array<Singular_values<n>, max_factors> gradients;
-    std::size_t count = 0;
-    for(std::size_t k : factors_)
-      visit(k, [&](const auto& m) {
-        values[count] = m.template value<n>(s);
-        gradients[count++] = m.template gradient<n>(s);
-      });
+    const Factors<n, false> f(*this, s);
     Singular_values<n> g = Singular_values<n>::Zero();
-    for(std::size_t k = 0; k < count; ++k) g += product_except(values, count, k, k) * gradients[k];
+    for(std::size_t k = 0; k < f.count; ++k) g += f.product_except(k, k) * f.gradients[k];
     return g;
   }
   // sum_k (prod_{j != k} D_j) hess D_k + sum_{k != l} (prod_{j != k, l} D_j) grad D_k grad D_l^T.
   template <int n>
   Singular_values_hessian<n> hessian(const Singular_values<n>& s) const
   {
-    std::array<double, max_factors> values;
-    std::array<Singular_values<n>, max_factors> gradients;
-    std::array<Singular_values_hessian<n>, max_factors> hessians;
-    std::size_t count = 0;
-    for(std::size_t k : factors_)
-      visit(k, [&](const auto& m) {
-        values[count] = m.template value<n>(s);
-        gradients[count] = m.template gradient<n>(s);
-        hessians[count++] = m.template hessian<n>(s);
-      });
+    const Factors<n, true> f(*this, s);
     Singular_values_hessian<n> h = Singular_values_hessian<n>::Zero();
-    for(std::size_t k = 0; k < count; ++k) {
-      h += product_except(values, count, k, k) * hessians[k];
-      for(std::size_t l = 0; l < count; ++l)
-        if(l != k) h += product_except(values, count, k, l) * (gradients[k] * gradients[l].transpose());
+    for(std::size_t k = 0; k < f.count; ++k) {
+      h += f.product_except(k, k) * f.hessians[k];
+      for(std::size_t l = 0; l < f.count; ++l)
+        if(l != k) h += f.product_except(k, l) * (f.gradients[k] * f.gradients[l].transpose());
     }
     return h;
   }
 
 private:
-  // The product of values[0..count) but for the factors k and l.
-  static double product_except(const std::array<double, max_factors>& values, std::size_t count, std::size_t k, std::size_t l)
+  // The factors' values and gradients at s, and their Hessians if asked.
+  template <int n, bool with_hessians>
+  struct Factors
   {
-    double p = 1;
-    for(std::size_t j = 0; j < count; ++j)
-      if(j != k && j != l) p *= values[j];
-    return p;
-  }
+    Factors(const Product_of_measures& product, const Singular_values<n>& s)
+    {
+      for(std::size_t k : product.factors_)
+        visit(k, [&](const auto& m) {
+          values[count] = m.template value<n>(s);
+          gradients[count] = m.template gradient<n>(s);
+          if constexpr(with_hessians) hessians[count] = m.template hessian<n>(s);
+          ++count;
+        });
+    }
+    // The product of the values but for the factors k and l.
+    double product_except(std::size_t k, std::size_t l) const
+    {
+      double p = 1;
+      for(std::size_t j = 0; j < count; ++j)
+        if(j != k && j != l) p *= values[j];
+      return p;
+    }
+
+    std::size_t count = 0;
+    std::array<double, max_factors> values;
+    std::array<Singular_values<n>, max_factors> gradients;
+    std::array<Singular_values_hessian<n>, with_hessians ? max_factors : 0> hessians;
+  };
+
   template <class F>
   static void visit(std::size_t k, F&& f)
   {

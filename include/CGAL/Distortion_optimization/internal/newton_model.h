@@ -38,13 +38,15 @@ namespace internal {
 // `type` is the model's type and `of(measure)` the model, empty where the measure is its own;
 // `own_steps_lead(measure)`: whether the measure's own Newton steps are taken by default where
 // no model's are.
-template <class Measure>
-struct Newton_model
+template <class Measure, bool lead>
+struct Own_newton_steps
 {
   using type = Measure;
   static std::optional<type> of(const Measure&) { return std::nullopt; }
-  static bool own_steps_lead(const Measure&) { return true; }
+  static bool own_steps_lead(const Measure&) { return lead; }
 };
+
+template <class Measure> struct Newton_model : Own_newton_steps<Measure, true> {};
 
 template <class Measure, class Model>
 struct Smooth_newton_model
@@ -57,13 +59,7 @@ struct Smooth_newton_model
 template <> struct Newton_model<Conformal_dilatation> : Smooth_newton_model<Conformal_dilatation, MIPS> {};
 template <> struct Newton_model<Condition_number> : Smooth_newton_model<Condition_number, MIPS> {};
 template <> struct Newton_model<Isometric_dilatation> : Smooth_newton_model<Isometric_dilatation, Symmetric_dirichlet> {};
-template <>
-struct Newton_model<Volume_distortion>
-{
-  using type = Volume_distortion;
-  static std::optional<type> of(const Volume_distortion&) { return std::nullopt; }
-  static bool own_steps_lead(const Volume_distortion&) { return false; }
-};
+template <> struct Newton_model<Volume_distortion> : Own_newton_steps<Volume_distortion, false> {};
 
 } // namespace internal
 } // namespace Distortion_optimization

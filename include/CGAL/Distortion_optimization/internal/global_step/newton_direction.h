@@ -119,27 +119,28 @@ public:
           measure_gradients(cells, count, own_gradient.data());
         }
         with_steps_measure([&](const auto& model) {
-        for(std::size_t i = 0; i < count; ++i) {
-          const std::uint32_t c = cells[i];
-          if(!cell_hessian<n>(model, p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
-            // An inverted or flat cell (where a measure that is not normalized is finite): the
-            // kernel's gradient (a proxy's is the measure's, below), and the Laplacian's stiffness
-            // in each coordinate.
-            if(!proxy_) {
-              double value;
-              cell_distortions<n>(model, p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
-              for(const Vec& v : gradient[i])
-                if(!v.allFinite()) finite = false;
+          for(std::size_t i = 0; i < count; ++i) {
+            const std::uint32_t c = cells[i];
+            if(!cell_hessian<n>(model, p_.map.jacobian(c), p_.map.inverse_rest[c], H[i], gradient[i])) {
+              // An inverted or flat cell (where a measure that is not normalized is finite): the
+              // kernel's gradient (a proxy's is the measure's, below), and the Laplacian's stiffness
+              // in each coordinate.
+              if(!proxy_) {
+                double value;
+                cell_distortions<n>(model, p_.map, 1, [c](std::size_t) { return c; }, &value, &gradient[i]);
+                for(const Vec& v : gradient[i])
+                  if(!v.allFinite()) finite = false;
+              }
+              const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
+              const Matrix<n + 1> stiffness = G.transpose() * G;
+              H[i].setZero();
+              for(int a = 0; a <= n; ++a)
+                for(int b = 0; b <= n; ++b)
+                  H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
             }
-            const Eigen::Matrix<double, n, n + 1> G = p_.map.hat_gradients(c);
-            const Matrix<n + 1> stiffness = G.transpose() * G;
-            H[i].setZero();
-            for(int a = 0; a <= n; ++a)
-              for(int b = 0; b <= n; ++b) H[i].template block<n, n>(n * a, n * b).diagonal().setConstant(stiffness(a, b));
+            if(proxy_) gradient[i] = own_gradient[i];
+            if(!normal.empty()) restrict_to_tangent_planes(p_, p_.map.cells[c], normal, H[i], gradient[i]);
           }
-          if(proxy_) gradient[i] = own_gradient[i];
-          if(!normal.empty()) restrict_to_tangent_planes(p_, p_.map.cells[c], normal, H[i], gradient[i]);
-        }
         });
       }, &g);
       if(!finite) return false;
