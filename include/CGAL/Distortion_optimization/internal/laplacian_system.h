@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -185,15 +186,21 @@ public:
   // independent solves, one per thread; the products with A run by rows (A is symmetric) on all
   // threads, so that a thread done with its column helps the others. Returns false if some column
   // did not reach the residual within the iterations. If asked, `outcome` gets the largest
-  // relative residual |r| / |b| of the columns and the most iterations one took.
+  // relative residual |r| / |b| of the columns and the most iterations one took. `give_up`
+  // WHEN_TOO_SLOW stops a column as soon as the residual's mean reduction per iteration so far would
+  // not reach the tolerance in twice the iterations allowed: for a solve worth trying only where
+  // it converges fast (a lagged preconditioner, where each iteration costs a good part of a new
+  // factorization); conjugate gradients speed up as they go, so a long solve must not stop early.
   struct Solve_outcome
   {
     double residual = 0;
     int iterations = 0;
   };
+  enum class Give_up { AT_THE_LIMIT, WHEN_TOO_SLOW };
   template <class Preconditioner>
   bool solve(const Eigen::SparseMatrix<double>& A, const Preconditioner& preconditioner, const Eigen::MatrixXd& B,
-             Eigen::MatrixXd& X, int iterations, double tolerance, Solve_outcome* outcome = nullptr) const
+             Eigen::MatrixXd& X, int iterations, double tolerance, Solve_outcome* outcome = nullptr,
+             Give_up give_up = Give_up::AT_THE_LIMIT) const
   {
     const std::size_t size = static_cast<std::size_t>(A.rows());
     // A's arrays in locals: the compiler cannot otherwise tell that writing pu leaves them alone.
@@ -254,6 +261,9 @@ public:
         r -= alpha * q;
         converged[d] = r.squaredNorm() < threshold;
         if(converged[d]) break;
+        // |r| / |b| = rate^(it + 1); rate^(2 iterations) > tolerance:
+        if(give_up == Give_up::WHEN_TOO_SLOW && iterations * std::log(r.squaredNorm() / b2) > (it + 1) * std::log(tolerance))
+          break;
         z = preconditioner.solve(r);
         const double rz_old = rz;
         rz = r.dot(z);

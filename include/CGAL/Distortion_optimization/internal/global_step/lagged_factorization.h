@@ -3,7 +3,8 @@
 //
 // The solve of a triangle mesh's Newton system H x = b (newton_direction.h). Inexact: conjugate
 // gradients on H preconditioned by the sparse factorization of an earlier H (sparse_cholesky.h),
-// to a loose residual; H is factored again when they need many iterations. Far from the minimum
+// to a loose residual; H is factored again when they need many iterations, or would at the rate
+// of their first ones. Far from the minimum
 // H changes much from step to step: after a failed attempt, the next 1, 2, 4, ... steps factor
 // at once.
 
@@ -39,7 +40,8 @@ public:
   {
     bool solved = false;
     if(lagged_.tries() && factorization_.is_factored()) {
-      solved = system_.solve(H, factorization_, b, solution, 6, 1e-3) && solution.allFinite();
+      solved = system_.solve(H, factorization_, b, solution, 6, 1e-3, nullptr, Laplacian_system<n>::Give_up::WHEN_TOO_SLOW) &&
+               solution.allFinite();
       solved ? lagged_.succeeded() : lagged_.failed();
     }
     if(!solved) {
