@@ -4,9 +4,8 @@
 // The solve of a triangle mesh's Newton system H x = b (newton_direction.h). Inexact: conjugate
 // gradients on H preconditioned by the sparse factorization of an earlier H (sparse_cholesky.h),
 // to a loose residual; H is factored again when they need many iterations, or would at the rate
-// of their first ones. Far from the minimum
-// H changes much from step to step: after a failed attempt, the next 1, 2, 4, ... steps factor
-// at once.
+// of their first ones. Far from the minimum H changes much from step to step: after a failed
+// attempt, the next 1, 2, 4, ... steps factor at once.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_LAGGED_FACTORIZATION_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_LAGGED_FACTORIZATION_H
