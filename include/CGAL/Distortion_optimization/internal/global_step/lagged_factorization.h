@@ -5,7 +5,9 @@
 // gradients on H preconditioned by the sparse factorization of an earlier H (sparse_cholesky.h),
 // to a loose residual; H is factored again when they need many iterations, or would at the rate
 // of their first ones. Far from the minimum H changes much from step to step: after a failed
-// attempt, the next 1, 2, 4, ... steps factor at once.
+// attempt, the next 1, 2, 4, ... steps factor at once. A run of a few iterations (the atlas's
+// rounds of two, each on a new scaffold) factors at every step: its steps are the long ones from
+// a start, after which an old factor hardly ever preconditions H well enough.
 
 #ifndef CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_LAGGED_FACTORIZATION_H
 #define CGAL_DISTORTION_OPTIMIZATION_INTERNAL_GLOBAL_STEP_LAGGED_FACTORIZATION_H
@@ -31,14 +33,15 @@ public:
   Lagged_factorization(const Laplacian_system<n>& system, std::size_t iterations)
     : system_(system),
       factorization_(Sparse_cholesky<n>::default_cholmod_from(),
-                     iterations > few_iterations ? Fill_reducing_order::NESTED_DISSECTION : Fill_reducing_order::MINIMUM_DEGREE)
+                     iterations > few_iterations ? Fill_reducing_order::NESTED_DISSECTION : Fill_reducing_order::MINIMUM_DEGREE),
+      lags_(iterations > few_iterations)
   {}
 
   // The solution of H x = b (`solution`, 0 on entry); NaN where the factorization fails.
   void solve(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& b, Eigen::MatrixXd& solution)
   {
     bool solved = false;
-    if(lagged_.tries() && factorization_.is_factored()) {
+    if(lags_ && lagged_.tries() && factorization_.is_factored()) {
       solved = system_.solve(H, factorization_, b, solution, 6, 1e-3, nullptr, Laplacian_system<n>::Give_up::WHEN_TOO_SLOW) &&
                solution.allFinite();
       solved ? lagged_.succeeded() : lagged_.failed();
@@ -60,7 +63,8 @@ private:
   static constexpr std::size_t few_iterations = 4;
   const Laplacian_system<n>& system_;
   Sparse_cholesky<n> factorization_;
-  Backoff lagged_;   // the solves preconditioned by the last factorization
+  const bool lags_;   // whether a solve may be preconditioned by an old factorization
+  Backoff lagged_;    // those solves
 };
 
 } // namespace internal
