@@ -30,6 +30,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -53,9 +54,9 @@ enum class Fill_reducing_order { NESTED_DISSECTION, MINIMUM_DEGREE };
 // The matrix is handed to CHOLMOD already permuted: given the lower triangle of A and a fill-reducing
 // order, cholmod_factorize() builds the permuted matrix by two transposes at every factorization
 // (its source: only an upper triangle in natural order is factored as it is). Here the order,
-// postordered by a first, simplicial analysis, permutes A's pattern once, with the place of each of
-// A's values in it; each factorization copies the values there and CHOLMOD factors the result in
-// natural order. Solves permute the right-hand side and the solution.
+// postordered by the analysis, permutes A's pattern once, with the place of each of A's values in
+// it; each factorization copies the values there and CHOLMOD factors the result in natural order.
+// Solves permute the right-hand side and the solution.
 template <int block>
 class Block_ordered_supernodal_llt
 {
@@ -97,30 +98,31 @@ public:
     std::vector<int> order(static_cast<std::size_t>(n));
     for(int i = 0; i < blocks; ++i)
       for(int a = 0; a < block; ++a) order[static_cast<std::size_t>(block * i + a)] = block * block_order_[i] + a;
-    // The order postordered by its elimination tree (CHOLMOD's final permutation): a simplicial
-    // analysis is enough to find it.
+    // One supernodal analysis in that order, which CHOLMOD postorders by the elimination tree (its
+    // final permutation, factor_->Perm): A's pattern is permuted once by it, and the factor then
+    // takes the permuted matrix as it is (natural order, identity Perm; the symbolic factor is
+    // that of the permuted matrix either way).
     if(ok) {
       cholmod_sparse M = Eigen::viewAsCholmod(C->selfadjointView<Eigen::Lower>());
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_GIVEN;
       common_.postorder = 1;
-      common_.supernodal = CHOLMOD_SIMPLICIAL;
-      cholmod_factor* symbolic = cholmod_analyze_p(&M, order.data(), nullptr, 0, &common_);
-      ok = symbolic != nullptr;
-      if(ok) permutation_.assign(static_cast<int*>(symbolic->Perm), static_cast<int*>(symbolic->Perm) + n);
-      cholmod_free_factor(&symbolic, &common_);
+      common_.supernodal = CHOLMOD_SUPERNODAL;
+      factor_ = cholmod_analyze_p(&M, order.data(), nullptr, 0, &common_);
+      ok = factor_ != nullptr && factor_->is_super && factor_->IPerm == nullptr;
     }
     if(ok) {
+      int* perm = static_cast<int*>(factor_->Perm);
+      permutation_.assign(perm, perm + n);
+      std::iota(perm, perm + n, 0);
+      factor_->ordering = CHOLMOD_NATURAL;
       permute_pattern(*C);
-      cholmod_sparse B = permuted();
-      common_.method[0].ordering = CHOLMOD_NATURAL;
-      common_.postorder = 0;
-      common_.supernodal = CHOLMOD_SUPERNODAL;
-      factor_ = cholmod_analyze(&B, &common_);
-      ok = factor_ != nullptr;
     }
     info_ = ok ? Eigen::Success : Eigen::NumericalIssue;
-    if(!ok) block_order_.clear();
+    if(!ok) {
+      free_factor();
+      block_order_.clear();
+    }
   }
 
   Eigen::ComputationInfo info() const { return info_; }
