@@ -31,17 +31,16 @@ class Lagged_factorization
 public:
   // `system`: the global steps' (H is its hessian()); `iterations`: the most the run takes.
   Lagged_factorization(const Laplacian_system<n>& system, std::size_t iterations)
-    : system_(system),
+    : system_(system), long_run_(iterations > few_iterations),
       factorization_(Sparse_cholesky<n>::default_cholmod_from(),
-                     iterations > few_iterations ? Fill_reducing_order::NESTED_DISSECTION : Fill_reducing_order::MINIMUM_DEGREE),
-      lags_(iterations > few_iterations)
+                     long_run_ ? Fill_reducing_order::NESTED_DISSECTION : Fill_reducing_order::MINIMUM_DEGREE)
   {}
 
   // The solution of H x = b (`solution`, 0 on entry); NaN where the factorization fails.
   void solve(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& b, Eigen::MatrixXd& solution)
   {
     bool solved = false;
-    if(lags_ && lagged_.tries() && factorization_.is_factored()) {
+    if(long_run_ && lagged_.tries() && factorization_.is_factored()) {
       solved = system_.solve(H, factorization_, b, solution, 6, 1e-3, nullptr, Laplacian_system<n>::Give_up::WHEN_TOO_SLOW) &&
                solution.allFinite();
       solved ? lagged_.succeeded() : lagged_.failed();
@@ -62,9 +61,11 @@ public:
 private:
   static constexpr std::size_t few_iterations = 4;
   const Laplacian_system<n>& system_;
+  // A run of more than a few iterations: METIS's ordering, dearer than the minimum degree's, pays
+  // off over its factorizations, and a solve may be preconditioned by an old one.
+  const bool long_run_;
   Sparse_cholesky<n> factorization_;
-  const bool lags_;   // whether a solve may be preconditioned by an old factorization
-  Backoff lagged_;    // those solves
+  Backoff lagged_;   // the solves preconditioned by the last factorization
 };
 
 } // namespace internal
